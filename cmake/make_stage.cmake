@@ -1,0 +1,21 @@
+# cmake -P script behind the 'stage' target (see Stage.cmake).
+set(lib "${STAGE}/lib/x86_64-linux-gnu/meshlab")
+set(plugins "${lib}/plugins")
+file(MAKE_DIRECTORY "${STAGE}/bin" "${plugins}")
+
+foreach(exe meshlab meshlabserver)
+  if(EXISTS "${MESHLAB_BIN_DIR}/${exe}")
+    file(COPY "${MESHLAB_BIN_DIR}/${exe}" DESTINATION "${STAGE}/bin")
+  endif()
+endforeach()
+file(CREATE_LINK "${MESHLAB_LIB_DIR}/libmeshlab-common.so" "${lib}/libmeshlab-common.so" SYMBOLIC)
+
+file(GLOB system_plugins "${MESHLAB_PLUGIN_DIR}/*.so")
+foreach(p IN LISTS system_plugins)
+  get_filename_component(name "${p}" NAME)
+  file(CREATE_LINK "${p}" "${plugins}/${name}" SYMBOLIC)
+endforeach()
+foreach(p IN LISTS OUR_PLUGINS)
+  get_filename_component(name "${p}" NAME)
+  file(CREATE_LINK "${p}" "${plugins}/${name}" SYMBOLIC)
+endforeach()

@@ -1,0 +1,73 @@
+// What cadlod's plugins tell each other through a MeshLab layer, stored as vcglib
+// attributes (so it needs no MeshLab header and works on any vcglib mesh):
+//  - parts: the VRML importer tags every face with a part id (per-face int attribute
+//    "cadlod_part") and stores the part table (per-mesh attribute "cadlod_parts");
+//    the simplifier keeps part borders, the OpenFlight exporter writes one Object per part.
+//  - LOD levels: the LOD-set filter stores a LodLevel (per-mesh attribute "cadlod_lod")
+//    on every layer of a set, level 0 being the original; the OpenFlight exporter
+//    gathers the layers of one set from the document and writes them as one LOD model.
+#pragma once
+
+#include <vcg/complex/allocate.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace cadlod {
+
+struct PartInfo {
+    std::string name;                       // nearest DEF name or node path
+    std::array<float, 4> color{0.8f, 0.8f, 0.8f, 1.0f};  // diffuse RGBA, 0..1
+};
+using PartTable = std::vector<PartInfo>;
+
+struct LodLevel {
+    int setId = 0;             // layers with the same setId form one LOD set
+    int level = 0;             // 0 = original, finest
+    int faces = 0;
+    double reduction = 0.0;    // fraction of level-0 faces removed (0.9 = 90 %)
+    double hausdorffMax = 0.0; // symmetric Hausdorff distance to level 0, model units
+    double hausdorffMean = 0.0;
+    double switchIn = 0.0;     // FAR distance: visible while switchOut <= d < switchIn
+    double switchOut = 0.0;    // NEAR distance
+    std::array<double, 3> center{0, 0, 0};  // LOD center (level 0 bounding-box center)
+};
+
+inline constexpr const char* kPartAttribute = "cadlod_part";
+inline constexpr const char* kPartTableAttribute = "cadlod_parts";
+inline constexpr const char* kLodAttribute = "cadlod_lod";
+
+// Returns the handle, creating the attribute when the mesh lacks it.
+template <class MeshType>
+typename MeshType::template PerFaceAttributeHandle<int> facePartHandle(MeshType& m)
+{
+    return vcg::tri::Allocator<MeshType>::template GetPerFaceAttribute<int>(m, kPartAttribute);
+}
+
+template <class MeshType>
+typename MeshType::template PerMeshAttributeHandle<PartTable> partTableHandle(MeshType& m)
+{
+    return vcg::tri::Allocator<MeshType>::template GetPerMeshAttribute<PartTable>(m, kPartTableAttribute);
+}
+
+template <class MeshType>
+bool hasParts(const MeshType& m)
+{
+    return vcg::tri::HasPerFaceAttribute(m, kPartAttribute) &&
+           vcg::tri::HasPerMeshAttribute(m, kPartTableAttribute);
+}
+
+template <class MeshType>
+bool hasLodLevel(const MeshType& m)
+{
+    return vcg::tri::HasPerMeshAttribute(m, kLodAttribute);
+}
+
+template <class MeshType>
+typename MeshType::template PerMeshAttributeHandle<LodLevel> lodLevelHandle(MeshType& m)
+{
+    return vcg::tri::Allocator<MeshType>::template GetPerMeshAttribute<LodLevel>(m, kLodAttribute);
+}
+
+}  // namespace cadlod

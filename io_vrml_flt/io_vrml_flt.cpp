@@ -1,0 +1,70 @@
+#include "io_vrml_flt.h"
+
+#include "format_adapters.h"
+
+namespace {
+bool isVrml(const QString& format)
+{
+    const QString f = format.toUpper();
+    return f == "WRL" || f == "WRZ" || f == "VRML";
+}
+bool isOpenFlight(const QString& format) { return format.toUpper() == "FLT"; }
+}  // namespace
+
+QString IoVrmlFltPlugin::pluginName() const { return "IOVrmlFlt"; }
+
+QList<MeshIOInterface::Format> IoVrmlFltPlugin::importFormats() const
+{
+    return {Format("VRML 97 / VRML 1.0 CAD export (cadlod)", tr("WRL")),
+            Format("VRML gzip (cadlod)", tr("WRZ")),
+            Format("VRML (cadlod)", tr("VRML")),
+            Format("OpenFlight (cadlod)", tr("FLT"))};
+}
+
+QList<MeshIOInterface::Format> IoVrmlFltPlugin::exportFormats() const
+{
+    return {Format("OpenFlight LOD model (cadlod)", tr("FLT"))};
+}
+
+void IoVrmlFltPlugin::GetExportMaskCapability(QString& format, int& capability, int& defaultBits) const
+{
+    capability = defaultBits = 0;
+    if (isOpenFlight(format))
+        capability = defaultBits = cadlod::fltExportCapability();
+}
+
+void IoVrmlFltPlugin::initPreOpenParameter(const QString& format, const QString&, RichParameterList& par)
+{
+    if (isVrml(format))
+        cadlod::vrmlOpenParameters(par);
+    else if (isOpenFlight(format))
+        cadlod::fltOpenParameters(par);
+}
+
+void IoVrmlFltPlugin::initSaveParameter(const QString& format, MeshModel& m, RichParameterList& par)
+{
+    if (isOpenFlight(format))
+        cadlod::fltSaveParameters(m, par);
+}
+
+bool IoVrmlFltPlugin::open(const QString& format, const QString& fileName, MeshModel& m, int& mask,
+                           const RichParameterList& par, vcg::CallBackPos* cb, QWidget*)
+{
+    if (isVrml(format))
+        return cadlod::openVrml(*this, fileName, m, mask, par, cb, errorMessage);
+    if (isOpenFlight(format))
+        return cadlod::openOpenFlight(*this, fileName, m, mask, par, cb, errorMessage);
+    errorMessage = "io_vrml_flt cannot open format " + format;
+    return false;
+}
+
+bool IoVrmlFltPlugin::save(const QString& format, const QString& fileName, MeshModel& m, const int mask,
+                           const RichParameterList& par, vcg::CallBackPos* cb, QWidget*)
+{
+    if (isOpenFlight(format))
+        return cadlod::saveOpenFlight(*this, fileName, m, mask, par, cb, errorMessage);
+    errorMessage = "io_vrml_flt cannot save format " + format;
+    return false;
+}
+
+MESHLAB_PLUGIN_NAME_EXPORTER(IoVrmlFltPlugin)

@@ -1,0 +1,34 @@
+// Runs the staged meshlabserver (a private MeshLab with cadlod's plugins, see
+// cmake/Stage.cmake) on the test run's Xvfb display, with a hard timeout: a plugin
+// that opens a dialog would otherwise block for ever.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace cadlod::test {
+
+struct ServerRun {
+    int exitCode = -1;
+    bool timedOut = false;
+    std::string output;  // stdout + stderr + the -l log file
+    bool ok() const { return exitCode == 0 && !timedOut; }
+};
+
+// Arguments as meshlabserver takes them, e.g. {"-i", in, "-o", out, "-m", "fq", "-s", mlx}.
+ServerRun runMeshlabServer(const std::vector<std::string>& args, int timeoutSeconds = 120);
+
+// A fresh directory for one test's files, under the build tree.
+std::string scratchDir(const std::string& testName);
+
+// Writes `text` to `path` (an .mlx script or a small input file).
+void writeText(const std::string& path, const std::string& text);
+std::string readText(const std::string& path);
+
+// An .mlx script applying the given filter blocks in order.
+std::string mlxScript(const std::vector<std::string>& filterBlocks);
+// <filter name="..."> with <Param .../> lines (already formatted).
+std::string mlxFilter(const std::string& name, const std::vector<std::string>& params = {});
+std::string mlxParam(const std::string& type, const std::string& name, const std::string& value);
+
+}  // namespace cadlod::test
