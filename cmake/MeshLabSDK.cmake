@@ -13,6 +13,9 @@ set(MESHLAB_SOURCE_DIR "${CMAKE_SOURCE_DIR}/.cache/meshlab-src" CACHE PATH
 set(MESHLAB_LIB_DIR "/usr/lib/x86_64-linux-gnu/meshlab" CACHE PATH "Directory of libmeshlab-common.so")
 set(MESHLAB_PLUGIN_DIR "${MESHLAB_LIB_DIR}/plugins" CACHE PATH "MeshLab's system plugin directory")
 set(MESHLAB_BIN_DIR "/usr/bin" CACHE PATH "Directory of meshlab and meshlabserver")
+# Relative to CMAKE_INSTALL_PREFIX (/usr by default): where `cmake --install` puts the plugins.
+set(MESHLAB_PLUGIN_INSTALL_DIR "lib/x86_64-linux-gnu/meshlab/plugins" CACHE STRING
+    "Plugin install directory, relative to CMAKE_INSTALL_PREFIX")
 
 set(_fix "run scripts/bootstrap.sh (as root) to install meshlab and unpack its source package")
 
@@ -79,5 +82,5 @@ function(cadlod_add_meshlab_plugin name)
                         LIBRARY_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/plugins")
   target_link_libraries(${name} PRIVATE cadlod::meshlab)
   target_link_options(${name} PRIVATE -Wl,--no-undefined)
-  install(TARGETS ${name} LIBRARY DESTINATION "${MESHLAB_PLUGIN_DIR}" COMPONENT plugins)
+  install(TARGETS ${name} LIBRARY DESTINATION "${MESHLAB_PLUGIN_INSTALL_DIR}" COMPONENT plugins)
 endfunction()
