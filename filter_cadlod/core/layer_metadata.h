@@ -8,7 +8,7 @@
 //    gathers the layers of one set from the document and writes them as one LOD model.
 #pragma once
 
-#include <vcg/complex/allocate.h>
+#include <vcg/complex/complex.h>
 
 #include <array>
 #include <string>

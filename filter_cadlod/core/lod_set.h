@@ -1,0 +1,109 @@
+// Planning a LOD set (design.md §5): which face count each level gets, and the distances
+// at which a viewer switches between levels. Level 0 is the original; level k is shown
+// from switchOut(k) (near) to switchIn(k) (far), and switchIn(k) == switchOut(k+1).
+#pragma once
+
+#include "layer_metadata.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace cadlod {
+
+enum class LevelSpec { ReductionPercent, FaceCount };
+
+struct LevelPlan {
+    std::vector<int> targetFaces;  // one per simplified level (level 1..n)
+    std::string error;             // non-empty when the list cannot be used
+    bool ok() const { return error.empty(); }
+};
+
+// Parses a level list such as "50 60 70 80 90" (reductions in %, as the paper) or
+// "20000 8000 2000" (face counts). Levels must get strictly coarser.
+inline LevelPlan planLevels(const std::string& list, LevelSpec spec, int inputFaces)
+{
+    LevelPlan plan;
+    std::istringstream in(list);
+    std::string token;
+    int previous = inputFaces;
+    while (in >> token) {
+        while (!token.empty() && (token.back() == '%' || token.back() == ','))
+            token.pop_back();
+        char* end = nullptr;
+        const double value = std::strtod(token.c_str(), &end);
+        if (token.empty() || *end != '\0' || !std::isfinite(value)) {
+            plan.error = "'" + token + "' is not a number";
+            return plan;
+        }
+        int faces = 0;
+        if (spec == LevelSpec::ReductionPercent) {
+            if (value <= 0.0 || value >= 100.0) {
+                plan.error = "reduction " + token + "% is outside (0, 100)";
+                return plan;
+            }
+            faces = int(std::lround(inputFaces * (1.0 - value / 100.0)));
+        } else {
+            if (value < 1.0 || value != std::floor(value)) {
+                plan.error = "face count " + token + " is not a positive whole number";
+                return plan;
+            }
+            faces = int(value);
+        }
+        faces = std::max(faces, 1);
+        if (faces >= previous) {
+            plan.error = "level '" + token + "' is not coarser than the level before it (" +
+                         std::to_string(faces) + " >= " + std::to_string(previous) + " faces)";
+            return plan;
+        }
+        plan.targetFaces.push_back(faces);
+        previous = faces;
+    }
+    if (plan.targetFaces.empty())
+        plan.error = "the level list is empty";
+    return plan;
+}
+
+struct ViewParams {
+    double fovYDegrees = 45.0;     // vertical field of view of the simulator's camera
+    double viewportHeightPx = 1080.0;
+    double pixelThreshold = 1.0;   // a level is used once its error projects below this
+};
+
+// Distance at which a geometric error of `error` (model units) projects onto fewer than
+// `pixelThreshold` pixels: error * H / (2 d tan(fov/2)) = N  =>  d = error * H / (2 N tan(fov/2)).
+inline double projectedErrorDistance(double error, const ViewParams& view)
+{
+    const double halfFov = 0.5 * view.fovYDegrees * M_PI / 180.0;
+    return error * view.viewportHeightPx / (2.0 * view.pixelThreshold * std::tan(halfFov));
+}
+
+// Fills switchIn/switchOut of levels[0..n) (level order, level 0 first) from their
+// hausdorffMax. The last level stays visible until the whole model (bounding-box diagonal
+// `modelSize`) projects below one pixel. Errors that are not increasing (a coarser level
+// measured closer than a finer one) are clamped so that the ranges stay monotone and
+// contiguous; such a level gets an empty range and is never shown.
+inline void assignSwitchDistances(std::vector<LodLevel>& levels, double modelSize, const ViewParams& view)
+{
+    if (levels.empty())
+        return;
+    double near = 0.0;
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+        levels[k].switchOut = near;
+        double far;
+        if (k + 1 < levels.size())
+            far = std::max(near, projectedErrorDistance(levels[k + 1].hausdorffMax, view));
+        else {
+            ViewParams onePixel = view;
+            onePixel.pixelThreshold = 1.0;
+            far = std::max(near, projectedErrorDistance(modelSize, onePixel));
+        }
+        levels[k].switchIn = far;
+        near = far;
+    }
+}
+
+}  // namespace cadlod

@@ -1,0 +1,93 @@
+#include "core/lod_set.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace cadlod;
+
+TEST(LodPlan, PaperReductionsGiveDecreasingFaceCounts)
+{
+    const LevelPlan p = planLevels("50 60 70 80 90", LevelSpec::ReductionPercent, 47508);
+    ASSERT_TRUE(p.ok()) << p.error;
+    EXPECT_EQ(p.targetFaces, (std::vector<int>{23754, 19003, 14252, 9502, 4751}));
+}
+
+TEST(LodPlan, AcceptsPercentSignsAndCommas)
+{
+    const LevelPlan p = planLevels("50%, 75%", LevelSpec::ReductionPercent, 1000);
+    ASSERT_TRUE(p.ok()) << p.error;
+    EXPECT_EQ(p.targetFaces, (std::vector<int>{500, 250}));
+}
+
+TEST(LodPlan, FaceCounts)
+{
+    const LevelPlan p = planLevels("20000 8000 2000", LevelSpec::FaceCount, 47508);
+    ASSERT_TRUE(p.ok()) << p.error;
+    EXPECT_EQ(p.targetFaces, (std::vector<int>{20000, 8000, 2000}));
+}
+
+TEST(LodPlan, RejectsBadLists)
+{
+    EXPECT_FALSE(planLevels("", LevelSpec::ReductionPercent, 100).ok());
+    EXPECT_FALSE(planLevels("50 abc", LevelSpec::ReductionPercent, 100).ok());
+    EXPECT_FALSE(planLevels("0", LevelSpec::ReductionPercent, 100).ok());
+    EXPECT_FALSE(planLevels("100", LevelSpec::ReductionPercent, 100).ok());
+    EXPECT_FALSE(planLevels("70 50", LevelSpec::ReductionPercent, 100).ok());  // not coarser
+    EXPECT_FALSE(planLevels("500", LevelSpec::FaceCount, 100).ok());           // above input
+    EXPECT_FALSE(planLevels("10.5", LevelSpec::FaceCount, 100).ok());
+    const LevelPlan p = planLevels("60 60", LevelSpec::ReductionPercent, 1000);
+    ASSERT_FALSE(p.ok());
+    EXPECT_NE(p.error.find("not coarser"), std::string::npos);
+}
+
+TEST(LodPlan, TinyMeshesKeepAtLeastOneFace)
+{
+    const LevelPlan p = planLevels("99.9", LevelSpec::ReductionPercent, 10);
+    ASSERT_TRUE(p.ok()) << p.error;
+    EXPECT_EQ(p.targetFaces, std::vector<int>{1});
+}
+
+TEST(SwitchDistance, ProjectsErrorToPixels)
+{
+    ViewParams view;  // 45 deg, 1080 px, 1 px
+    // At distance d the viewport spans 2 d tan(22.5 deg); an error e covers e*1080/span px.
+    const double d = projectedErrorDistance(0.5, view);
+    const double pixels = 0.5 * 1080.0 / (2.0 * d * std::tan(22.5 * M_PI / 180.0));
+    EXPECT_NEAR(pixels, 1.0, 1e-12);
+    view.pixelThreshold = 2.0;
+    EXPECT_NEAR(projectedErrorDistance(0.5, view), d / 2.0, 1e-9);
+}
+
+TEST(SwitchDistance, RangesAreContiguousAndMonotone)
+{
+    std::vector<LodLevel> levels(4);
+    const double errors[] = {0.0, 0.01, 0.05, 0.2};
+    for (int k = 0; k < 4; ++k) {
+        levels[k].level = k;
+        levels[k].hausdorffMax = errors[k];
+    }
+    ViewParams view;
+    assignSwitchDistances(levels, 300.0, view);
+    EXPECT_EQ(levels[0].switchOut, 0.0);
+    for (int k = 0; k < 4; ++k)
+        EXPECT_LT(levels[k].switchOut, levels[k].switchIn) << "level " << k;
+    for (int k = 0; k + 1 < 4; ++k) {
+        EXPECT_EQ(levels[k].switchIn, levels[k + 1].switchOut);
+        EXPECT_NEAR(levels[k].switchIn, projectedErrorDistance(errors[k + 1], view), 1e-9);
+    }
+    EXPECT_NEAR(levels[3].switchIn, projectedErrorDistance(300.0, view), 1e-9);
+}
+
+TEST(SwitchDistance, NonIncreasingErrorGivesEmptyRangeNotDisorder)
+{
+    std::vector<LodLevel> levels(3);
+    levels[1].hausdorffMax = 0.05;
+    levels[2].hausdorffMax = 0.03;  // measured closer than level 1
+    assignSwitchDistances(levels, 100.0, ViewParams{});
+    EXPECT_EQ(levels[1].switchOut, levels[1].switchIn);  // never shown
+    for (int k = 0; k + 1 < 3; ++k) {
+        EXPECT_LE(levels[k].switchOut, levels[k].switchIn);
+        EXPECT_EQ(levels[k].switchIn, levels[k + 1].switchOut);
+    }
+}
