@@ -6,7 +6,8 @@ namespace {
 bool isVrml(const QString& format)
 {
     const QString f = format.toUpper();
-    return f == "WRL" || f == "WRZ" || f == "VRML";
+    // "GZ": MeshLab names a format by the last suffix, so x.wrl.gz arrives as "gz".
+    return f == "WRL" || f == "WRZ" || f == "VRML" || f == "GZ";
 }
 bool isOpenFlight(const QString& format) { return format.toUpper() == "FLT"; }
 }  // namespace
@@ -18,6 +19,7 @@ QList<MeshIOInterface::Format> IoVrmlFltPlugin::importFormats() const
     return {Format("VRML 97 / VRML 1.0 CAD export (cadlod)", tr("WRL")),
             Format("VRML gzip (cadlod)", tr("WRZ")),
             Format("VRML (cadlod)", tr("VRML")),
+            Format("VRML gzip, .wrl.gz (cadlod)", tr("GZ")),
             Format("OpenFlight (cadlod)", tr("FLT"))};
 }
 

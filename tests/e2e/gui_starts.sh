@@ -5,7 +5,7 @@ set -uo pipefail
 meshlab=$1
 export DISPLAY=$(cat "$2")
 log=$(mktemp)
-"$meshlab" >"$log" 2>&1 &
+LD_PRELOAD="${CADLOD_SANITIZER_PRELOAD:-}" "$meshlab" >"$log" 2>&1 &
 pid=$!
 window=""
 for _ in $(seq 150); do

@@ -41,7 +41,10 @@ ServerRun runMeshlabServer(const std::vector<std::string>& args, int timeoutSeco
     const std::string outFile = logFile + ".out";
 
     std::ostringstream cmd;
-    cmd << "DISPLAY=" << shellQuote(xvfbDisplay()) << " timeout -k 5 " << timeoutSeconds << " "
+    cmd << "DISPLAY=" << shellQuote(xvfbDisplay());
+    if (*CADLOD_SANITIZER_PRELOAD)
+        cmd << " LD_PRELOAD=" << shellQuote(CADLOD_SANITIZER_PRELOAD);
+    cmd << " timeout -k 5 " << timeoutSeconds << " "
         << shellQuote(CADLOD_STAGE_MESHLABSERVER) << " -l " << shellQuote(logFile);
     for (const std::string& a : args)
         cmd << ' ' << shellQuote(a);
