@@ -1,0 +1,380 @@
+// The CAD Quadric Edge Collapse: a vcglib local-optimization edge collapse (the
+// TriEdgeCollapse framework, like vcglib's TriEdgeCollapseQuadric) whose vertex placement
+// breaks quadric-cost ties by triangle compactness.
+//
+// For an edge (v0, v1) the candidates are v0, v1, evenly spaced points between them and
+// the quadric optimum (when well conditioned and near the edge). Candidates within a
+// relative tolerance of the cheapest cost, or within an absolute floor (flat regions),
+// are tied; the tied candidate whose surrounding triangles have the highest mean
+// compactness wins. Priority = quadric cost of the chosen position (normalised by the
+// bbox diagonal) plus a tiny edge-length term that orders collapses in flat regions.
+//
+// vcglib pitfalls handled here: the base constructor would call the base ComputePriority,
+// so this class sets its own fields; ComputePosition is not virtual in vcglib, so the
+// position is computed and stored by ComputePriority; all per-run state lives in the
+// CollapseContext passed as the BaseParameterClass, not in statics (vcglib's GlobalMark
+// is still static: one simplification at a time per process).
+#pragma once
+
+#include "cad_quadrics.h"
+#include "compactness.h"
+#include "feature_edges.h"
+#include "simplify_params.h"
+
+#include <vcg/complex/algorithms/edge_collapse.h>
+#include <vcg/complex/algorithms/local_optimization.h>
+#include <vcg/complex/algorithms/local_optimization/tri_edge_collapse.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace cadlod {
+
+// A face around the collapsing edge that survives it: (new vertex, a, b).
+struct RingFace {
+    vcg::Point3d a, b;
+    vcg::Point3d normal;  // before the collapse, not normalised (zero for zero-area faces)
+};
+
+struct PlacementScore {
+    bool valid = false;
+    bool flipped = false;
+    double meanCompactness = 0.0;
+    double minCompactness = 0.0;
+};
+
+template <class MeshType>
+struct CollapseContext : public vcg::BaseParameterClass {
+    using VertexType = typename MeshType::VertexType;
+
+    SimplifyParams params;
+    FeatureBits bits;
+    VertexQuadrics<VertexType> quadrics;
+    SimplifyStats* stats = nullptr;
+    double diagonal = 1.0;
+    double invDiagonal4 = 1.0;
+    double flatError2 = 0.0;      // (flatTolerance * diagonal)²
+    double maxErrorAbs = 0.0;     // 0: unbounded
+    double cosNormalLimit = -1.0;
+    double largestError = 0.0;    // over executed collapses
+    std::vector<RingFace> ring;   // scratch of the edge being evaluated
+};
+
+// Cheapest point of a quadric, when its matrix is well conditioned (scale-free test).
+inline bool quadricMinimum(const Quadric& q, vcg::Point3d& x)
+{
+    const double a = q.a[0], b = q.a[1], c = q.a[2], d = q.a[3], e = q.a[4], f = q.a[5];
+    const double c00 = d * f - e * e, c01 = c * e - b * f, c02 = b * e - c * d;
+    const double det = a * c00 + b * c01 + c * c02;
+    const double norm = std::sqrt(a * a + d * d + f * f + 2 * (b * b + c * c + e * e));
+    if (!(norm > 0) || std::abs(det) < 1e-6 * norm * norm * norm)
+        return false;
+    const double c11 = a * f - c * c, c12 = b * c - a * e, c22 = a * d - b * b;
+    const double rx = -0.5 * q.b[0], ry = -0.5 * q.b[1], rz = -0.5 * q.b[2];
+    x = vcg::Point3d(c00 * rx + c01 * ry + c02 * rz, c01 * rx + c11 * ry + c12 * rz,
+                     c02 * rx + c12 * ry + c22 * rz) / det;
+    return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
+}
+
+inline double applyQuadric(const Quadric& q, const vcg::Point3d& p)
+{
+    return std::max(0.0, q.Apply(p));
+}
+
+template <class MeshType>
+class CadEdgeCollapse
+    : public vcg::tri::TriEdgeCollapse<MeshType, vcg::tri::BasicVertexPair<typename MeshType::VertexType>,
+                                       CadEdgeCollapse<MeshType>>
+{
+public:
+    using VertexType = typename MeshType::VertexType;
+    using FaceType = typename MeshType::FaceType;
+    using VertexPair = vcg::tri::BasicVertexPair<VertexType>;
+    using Base = vcg::tri::TriEdgeCollapse<MeshType, VertexPair, CadEdgeCollapse<MeshType>>;
+    using HeapType = typename vcg::LocalOptimization<MeshType>::HeapType;
+    using HeapElem = typename vcg::LocalOptimization<MeshType>::HeapElem;
+    using ScalarType = typename MeshType::ScalarType;
+    using Context = CollapseContext<MeshType>;
+    using VFIterator = vcg::face::VFIterator<FaceType>;
+
+    CadEdgeCollapse(const VertexPair& p, int mark, vcg::BaseParameterClass* pp)
+    {
+        this->localMark = mark;
+        this->pos = p;
+        this->_priority = ComputePriority(pp);
+    }
+
+    ScalarType ComputePriority(vcg::BaseParameterClass* pp) override
+    {
+        evaluate(*static_cast<Context*>(pp));
+        return this->_priority;
+    }
+
+    bool IsFeasible(vcg::BaseParameterClass* pp) override
+    {
+        if (!feasible_)
+            return false;
+        Context& ctx = *static_cast<Context*>(pp);
+        if (ctx.params.preserveTopology &&
+            !vcg::tri::EdgeCollapser<MeshType, VertexPair>::LinkConditions(this->pos)) {
+            ++ctx.stats->rejectedTopology;
+            return false;
+        }
+        return true;
+    }
+
+    void Execute(MeshType& m, vcg::BaseParameterClass* pp) override
+    {
+        Context& ctx = *static_cast<Context*>(pp);
+        VertexType* v0 = this->pos.V(0);
+        VertexType* v1 = this->pos.V(1);
+        // Feature edges (v0,x) and (v1,x) of the faces about to vanish merge into (v1,x):
+        // remember x so that the surviving edge keeps the feature mark.
+        std::vector<VertexType*> featureApex;
+        for (VFIterator vfi(v0); !vfi.End(); ++vfi) {
+            FaceType* f = vfi.F();
+            const int z = vfi.I();
+            if (f->V((z + 1) % 3) != v1 && f->V((z + 2) % 3) != v1)
+                continue;
+            const int apexIndex = f->V((z + 1) % 3) == v1 ? (z + 2) % 3 : (z + 1) % 3;
+            if (f->IsUserBit(ctx.bits.edge[(apexIndex + 1) % 3]) ||
+                f->IsUserBit(ctx.bits.edge[(apexIndex + 2) % 3]))
+                featureApex.push_back(f->V(apexIndex));
+        }
+        ctx.quadrics.merge(v0, v1);
+        vcg::tri::EdgeCollapser<MeshType, VertexPair>::Do(m, this->pos, target_);
+        for (VertexType* x : featureApex)
+            markEdge(ctx, v1, x);
+        ctx.largestError = std::max(ctx.largestError, double(error_));
+    }
+
+    void UpdateHeap(HeapType& heap, vcg::BaseParameterClass* pp) override
+    {
+        ++this->GlobalMark();
+        VertexType* v1 = this->pos.V(1);
+        v1->IMark() = this->GlobalMark();
+        for (VFIterator vfi(v1); !vfi.End(); ++vfi) {
+            vfi.V1()->ClearV();
+            vfi.V2()->ClearV();
+            vfi.V1()->IMark() = this->GlobalMark();
+            vfi.V2()->IMark() = this->GlobalMark();
+        }
+        for (VFIterator vfi(v1); !vfi.End(); ++vfi) {
+            if (!vfi.V1()->IsV() && vfi.V1()->IsRW()) {
+                vfi.V1()->SetV();
+                push(heap, vfi.V0(), vfi.V1(), pp);
+            }
+            if (!vfi.V2()->IsV() && vfi.V2()->IsRW()) {
+                vfi.V2()->SetV();
+                push(heap, vfi.V2(), vfi.V0(), pp);
+            }
+            if (vfi.V1()->IsRW() && vfi.V2()->IsRW())
+                push(heap, vfi.V1(), vfi.V2(), pp);
+        }
+    }
+
+    // Every edge once, both vertices writable.
+    static void Init(MeshType& m, HeapType& heap, vcg::BaseParameterClass* pp)
+    {
+        for (HeapElem& e : heap)
+            delete e.locModPtr;
+        heap.clear();
+        for (VertexType& v : m.vert) {
+            if (v.IsD() || !v.IsRW())
+                continue;
+            for (VFIterator x(&v); !x.End(); ++x) {
+                x.V1()->ClearV();
+                x.V2()->ClearV();
+            }
+            for (VFIterator x(&v); !x.End(); ++x) {
+                for (VertexType* w : {x.V1(), x.V2()}) {
+                    if (&v < w && w->IsRW() && !w->IsV()) {
+                        w->SetV();
+                        heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(&v, w), Base::GlobalMark(), pp)));
+                    }
+                }
+            }
+        }
+    }
+
+    static void Finalize(MeshType&, HeapType&, vcg::BaseParameterClass*) {}
+    static float HeapSimplexRatio(vcg::BaseParameterClass*) { return 4.0f; }
+    static bool IsSymmetric(vcg::BaseParameterClass*) { return true; }
+
+    const vcg::Point3<ScalarType>& target() const { return target_; }
+    float error() const { return error_; }
+
+private:
+    static void push(HeapType& heap, VertexType* a, VertexType* b, vcg::BaseParameterClass* pp)
+    {
+        heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(a, b), Base::GlobalMark(), pp)));
+        std::push_heap(heap.begin(), heap.end());
+    }
+
+    static void markEdge(Context& ctx, VertexType* v, VertexType* x)
+    {
+        for (VFIterator vfi(v); !vfi.End(); ++vfi) {
+            FaceType* f = vfi.F();
+            const int z = vfi.I();
+            if (f->V((z + 1) % 3) == x)
+                f->SetUserBit(ctx.bits.edge[z]);
+            if (f->V((z + 2) % 3) == x)
+                f->SetUserBit(ctx.bits.edge[(z + 2) % 3]);
+        }
+    }
+
+    void reject(int& reason)
+    {
+        ++reason;
+        feasible_ = false;
+        this->_priority = std::numeric_limits<ScalarType>::max();
+    }
+
+    // What the faces around the edge say: surviving faces into ctx.ring, whether the
+    // endpoints and the edge lie on features, and the worst compactness there now.
+    struct Neighbourhood {
+        bool v0OnFeature = false, v1OnFeature = false, edgeIsFeature = false;
+        double worstCompactness = 1.0;
+    };
+
+    Neighbourhood gatherRing(Context& ctx, VertexType* v0, VertexType* v1)
+    {
+        Neighbourhood n;
+        ctx.ring.clear();
+        for (int side = 0; side < 2; ++side) {
+            VertexType* v = side == 0 ? v0 : v1;
+            VertexType* other = side == 0 ? v1 : v0;
+            bool onFeature = false;
+            for (VFIterator vfi(v); !vfi.End(); ++vfi) {
+                FaceType* f = vfi.F();
+                const int z = vfi.I();
+                VertexType* a = f->V((z + 1) % 3);
+                VertexType* b = f->V((z + 2) % 3);
+                const bool featureA = f->IsUserBit(ctx.bits.edge[z]);
+                const bool featureB = f->IsUserBit(ctx.bits.edge[(z + 2) % 3]);
+                onFeature |= featureA || featureB;
+                if (a == other || b == other) {
+                    n.edgeIsFeature |= a == other ? featureA : featureB;
+                    if (side == 1)
+                        continue;  // shared faces were seen from v0
+                } else {
+                    const vcg::Point3d pa = vcg::Point3d::Construct(a->cP());
+                    const vcg::Point3d pb = vcg::Point3d::Construct(b->cP());
+                    const vcg::Point3d pv = vcg::Point3d::Construct(v->cP());
+                    ctx.ring.push_back({pa, pb, (pa - pv) ^ (pb - pv)});
+                }
+                n.worstCompactness = std::min(n.worstCompactness, compactness(f->cP(0), f->cP(1), f->cP(2)));
+            }
+            (side == 0 ? n.v0OnFeature : n.v1OnFeature) = onFeature;
+        }
+        return n;
+    }
+
+    PlacementScore score(const Context& ctx, const vcg::Point3d& p, double worstBefore) const
+    {
+        PlacementScore s;
+        double sum = 0.0, worst = 1.0;
+        for (const RingFace& f : ctx.ring) {
+            if (ctx.params.normalCheck) {
+                const vcg::Point3d n = (f.a - p) ^ (f.b - p);
+                const double len = n.Norm() * f.normal.Norm();
+                if (f.normal.SquaredNorm() > 0 && !(len > 0 && (n * f.normal) >= ctx.cosNormalLimit * len)) {
+                    s.flipped = true;
+                    return s;
+                }
+            }
+            const double c = compactness(p, f.a, f.b);
+            sum += c;
+            worst = std::min(worst, c);
+        }
+        s.meanCompactness = sum / double(ctx.ring.size());
+        s.minCompactness = worst;
+        s.valid = !(worst < ctx.params.minCompactness && worst < worstBefore);
+        return s;
+    }
+
+    void evaluate(Context& ctx)
+    {
+        feasible_ = true;
+        VertexType* v0 = this->pos.V(0);
+        VertexType* v1 = this->pos.V(1);
+        SimplifyStats& stats = *ctx.stats;
+        if (v0->IsUserBit(ctx.bits.locked) || v1->IsUserBit(ctx.bits.locked))
+            return reject(stats.rejectedFeature);
+        const Neighbourhood n = gatherRing(ctx, v0, v1);
+        if (n.v0OnFeature && n.v1OnFeature && !n.edgeIsFeature)
+            return reject(stats.rejectedFeature);  // would cut across a feature
+        if (ctx.ring.empty())
+            return reject(stats.rejectedTopology);  // would delete a whole component
+
+        Quadric q = ctx.quadrics.quadric(v0);
+        q += ctx.quadrics.quadric(v1);
+        const double area = ctx.quadrics.area(v0) + ctx.quadrics.area(v1);
+        const vcg::Point3d p0 = vcg::Point3d::Construct(v0->cP());
+        const vcg::Point3d p1 = vcg::Point3d::Construct(v1->cP());
+
+        struct Candidate { vcg::Point3d p; double cost; };
+        Candidate cand[32];
+        int count = 0;
+        const int interior = std::clamp(ctx.params.candidatesPerEdge, 0, 28);
+        cand[count++] = {p0, 0.0};
+        cand[count++] = {p1, 0.0};
+        for (int i = 1; i <= interior; ++i)
+            cand[count++] = {p0 + (p1 - p0) * (double(i) / (interior + 1)), 0.0};
+        vcg::Point3d optimum;
+        const double edgeLength = vcg::Distance(p0, p1);
+        if (ctx.params.optimalPlacement && quadricMinimum(q, optimum) &&
+            vcg::Distance(optimum, (p0 + p1) * 0.5) <= edgeLength)
+            cand[count++] = {optimum, 0.0};
+        double minCost = std::numeric_limits<double>::max();
+        for (int i = 0; i < count; ++i) {
+            cand[i].cost = applyQuadric(q, cand[i].p);
+            minCost = std::min(minCost, cand[i].cost);
+        }
+        const double tieLimit = minCost * (1.0 + ctx.params.tieTolerance) + area * ctx.flatError2;
+
+        int best = -1;
+        PlacementScore bestScore;
+        bool anyFlip = false;
+        for (int i = 0; i < count; ++i) {
+            if (cand[i].cost > tieLimit)
+                continue;
+            const PlacementScore s = score(ctx, cand[i].p, n.worstCompactness);
+            anyFlip |= s.flipped;
+            if (s.valid && (best < 0 || s.meanCompactness > bestScore.meanCompactness ||
+                            (s.meanCompactness == bestScore.meanCompactness && cand[i].cost < cand[best].cost))) {
+                best = i;
+                bestScore = s;
+            }
+        }
+        if (best < 0)  // no tied candidate is acceptable: the cheapest acceptable one
+            for (int i = 0; i < count; ++i) {
+                if (cand[i].cost <= tieLimit || (best >= 0 && cand[i].cost >= cand[best].cost))
+                    continue;
+                const PlacementScore s = score(ctx, cand[i].p, n.worstCompactness);
+                anyFlip |= s.flipped;
+                if (s.valid)
+                    best = i;
+            }
+        if (best < 0)
+            return reject(anyFlip ? stats.rejectedFlip : stats.rejectedCompactness);
+
+        const double cost = cand[best].cost;
+        target_ = vcg::Point3<ScalarType>::Construct(cand[best].p);
+        error_ = float(area > 0 ? std::sqrt(cost / area) : std::sqrt(cost));
+        if (ctx.maxErrorAbs > 0 && error_ > ctx.maxErrorAbs)
+            return reject(stats.rejectedError);
+        // Below the flat floor (area * flatTolerance² relative), so flat collapses go
+        // shortest edge first and curved ones by cost.
+        const double r = edgeLength / ctx.diagonal;
+        const double flatOrder = 0.1 * ctx.params.flatTolerance * ctx.params.flatTolerance * r * r * r * r;
+        this->_priority = ScalarType(cost * ctx.invDiagonal4 + flatOrder);
+    }
+
+    vcg::Point3<ScalarType> target_;
+    float error_ = 0.0f;
+    bool feasible_ = true;
+};
+
+}  // namespace cadlod

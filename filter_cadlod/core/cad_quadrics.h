@@ -1,0 +1,117 @@
+// Per-vertex error quadrics for the CAD edge collapse (Garland–Heckbert):
+//  - every face adds its plane, weighted by its area, to its three vertices;
+//  - every feature edge (boundary, crease, part border) adds, for each face along it, the
+//    plane through the edge perpendicular to that face, weighted by boundaryWeight·|e|²
+//    (an area, like the face planes), so features keep their line;
+//  - planarQuadric adds the same edge planes with a tiny weight on all other edges.
+// The accumulated face area is kept beside each quadric, so sqrt(cost / area) is an RMS
+// distance in model units: the collapse error reported and bounded by maxError.
+#pragma once
+
+#include "feature_edges.h"
+
+#include <vcg/math/quadric.h>
+
+#include <vector>
+
+namespace cadlod {
+
+using Quadric = vcg::math::Quadric<double>;
+
+// Quadric of the squared distance to the plane n·x = d (n of unit length), times weight.
+inline Quadric planeQuadric(const vcg::Point3d& n, double d, double weight)
+{
+    Quadric q;
+    q.a[0] = weight * n[0] * n[0];
+    q.a[1] = weight * n[0] * n[1];
+    q.a[2] = weight * n[0] * n[2];
+    q.a[3] = weight * n[1] * n[1];
+    q.a[4] = weight * n[1] * n[2];
+    q.a[5] = weight * n[2] * n[2];
+    q.b[0] = -2.0 * weight * d * n[0];
+    q.b[1] = -2.0 * weight * d * n[1];
+    q.b[2] = -2.0 * weight * d * n[2];
+    q.c = weight * d * d;
+    return q;
+}
+
+struct QuadricWeights {
+    double feature = 1.0;   // constraint planes of feature edges
+    double planar = 0.0;    // constraint planes of the other edges (0: none)
+};
+
+template <class VertexType>
+class VertexQuadrics
+{
+public:
+    template <class MeshType, class IsFeatureEdge>
+    void init(MeshType& m, const QuadricWeights& w, IsFeatureEdge isFeatureEdge)
+    {
+        base_ = m.vert.empty() ? nullptr : &m.vert[0];
+        Quadric zero;
+        zero.SetZero();
+        quadric_.assign(m.vert.size(), zero);
+        area_.assign(m.vert.size(), 0.0);
+        for (auto& f : m.face)
+            if (!f.IsD())
+                addFace(f, w, isFeatureEdge);
+    }
+
+    Quadric& quadric(const VertexType* v) { return quadric_[v - base_]; }
+    double& area(const VertexType* v) { return area_[v - base_]; }
+
+    // v1 survives a collapse of v0 into it.
+    void merge(const VertexType* v0, const VertexType* v1)
+    {
+        quadric(v1) += quadric(v0);
+        area(v1) += area(v0);
+    }
+
+    std::size_t bytes() const { return quadric_.capacity() * sizeof(Quadric) + area_.capacity() * sizeof(double); }
+
+private:
+    template <class FaceType, class IsFeatureEdge>
+    void addFace(FaceType& f, const QuadricWeights& w, IsFeatureEdge isFeatureEdge)
+    {
+        vcg::Point3d p[3];
+        for (int j = 0; j < 3; ++j)
+            p[j] = vcg::Point3d::Construct(f.cP(j));
+        vcg::Point3d n = (p[1] - p[0]) ^ (p[2] - p[0]);
+        const double doubleArea = n.Norm();
+        if (!(doubleArea > 0) || !std::isfinite(doubleArea))
+            return;
+        n /= doubleArea;
+        const double area = 0.5 * doubleArea;
+        const Quadric q = planeQuadric(n, n * p[0], area);
+        for (int j = 0; j < 3; ++j) {
+            quadric(f.V(j)) += q;
+            area_[f.V(j) - base_] += area;
+        }
+        for (int j = 0; j < 3; ++j) {
+            const double weight = isFeatureEdge(f, j) ? w.feature : w.planar;
+            if (weight > 0)
+                addEdgePlane(f, p[j], p[(j + 1) % 3], n, weight, j);
+        }
+    }
+
+    template <class FaceType>
+    void addEdgePlane(FaceType& f, const vcg::Point3d& a, const vcg::Point3d& b,
+                      const vcg::Point3d& faceNormal, double weight, int j)
+    {
+        const vcg::Point3d e = b - a;
+        const double len2 = e.SquaredNorm();
+        if (!(len2 > 0))
+            return;
+        vcg::Point3d n = faceNormal ^ e;
+        n.Normalize();
+        const Quadric q = planeQuadric(n, n * a, weight * len2);
+        quadric(f.V(j)) += q;
+        quadric(f.V((j + 1) % 3)) += q;
+    }
+
+    const VertexType* base_ = nullptr;
+    std::vector<Quadric> quadric_;
+    std::vector<double> area_;
+};
+
+}  // namespace cadlod

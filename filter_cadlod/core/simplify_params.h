@@ -1,0 +1,82 @@
+// Parameters and results of the CAD Quadric Edge Collapse (cadlod::simplify).
+// Plain data, no vcglib or MeshLab types: the MeshLab filter, the LOD-set filter, the
+// tests and the benchmarks all fill a SimplifyParams and read a SimplifyStats.
+#pragma once
+
+#include <algorithm>
+#include <string>
+
+namespace cadlod {
+
+struct SimplifyParams {
+    // Stop criteria: whichever is met first. 0 disables a criterion; at least one
+    // must be set.
+    int targetFaces = 0;         // stop at this many faces
+    double reductionPerc = 0.0;  // stop after removing this % of the input faces (0..100)
+    double maxError = 0.0;       // never collapse beyond this error (fraction of bbox diagonal)
+
+    // Placement: candidates are both endpoints, `candidatesPerEdge` evenly spaced interior
+    // points and (optimalPlacement) the quadric optimum when well conditioned. Those whose
+    // cost is within tieTolerance (relative) of the cheapest, or within flatTolerance
+    // (RMS distance as a fraction of the bbox diagonal), are tied; the tied candidate
+    // with the best mean compactness of the surrounding triangles wins.
+    double tieTolerance = 0.1;
+    double flatTolerance = 1e-5;
+    int candidatesPerEdge = 3;
+    bool optimalPlacement = true;
+
+    // CAD protection.
+    double featureAngle = 30.0;      // degrees; sharper edges are creases kept sharp
+    bool preserveBoundary = true;    // boundary edges get constraint quadrics
+    double boundaryWeight = 1.0;     // multiplier of the boundary/crease constraint weight
+    bool preserveTopology = true;    // link condition (no new non-manifold/genus change)
+    bool normalCheck = true;         // reject collapses that turn a face by > normalThreshold
+    double normalThreshold = 60.0;   // degrees
+    double minCompactness = 0.05;    // never create a face below this unless it improves the worst
+    bool planarQuadric = false;      // tiny edge quadrics everywhere: steadier flat regions
+    bool keepPartBorders = true;     // edges between faces of different cadlod_part ids are features
+    bool selectedOnly = false;       // only collapse vertices whose faces are all selected
+};
+
+struct SimplifyStats {
+    bool ok = false;            // false: nothing was done, `message` says why
+    std::string message;        // error, or a note (e.g. target not reached)
+    int facesBefore = 0;
+    int facesAfter = 0;
+    int verticesBefore = 0;
+    int verticesAfter = 0;
+    int targetFaces = 0;        // the face count the stop criteria asked for
+    int collapses = 0;
+    double largestError = 0.0;  // largest collapse error (RMS distance to the merged planes), model units
+    double diagonal = 0.0;      // bbox diagonal of the input
+    double seconds = 0.0;
+    // What the input carried.
+    int featureEdges = 0;       // creases above the feature angle and part borders
+    int boundaryEdges = 0;
+    int nonManifoldEdges = 0;   // their vertices are locked
+    int degenerateFaces = 0;    // faces repeating a vertex: their vertices are locked
+    // Why candidate collapses were refused (counted at evaluation time).
+    int rejectedFlip = 0;
+    int rejectedCompactness = 0;
+    int rejectedFeature = 0;
+    int rejectedError = 0;
+    int rejectedTopology = 0;
+
+    double largestErrorFraction() const { return diagonal > 0 ? largestError / diagonal : 0.0; }
+};
+
+// The face count the stop criteria translate to for an input of `faces` faces
+// (0 when only maxError is set).
+inline int targetFaceCount(const SimplifyParams& p, int faces)
+{
+    int target = 0;
+    if (p.targetFaces > 0)
+        target = p.targetFaces;
+    if (p.reductionPerc > 0.0) {
+        const double kept = faces * (1.0 - p.reductionPerc / 100.0);
+        target = std::max(target, int(kept + 0.5));
+    }
+    return target;
+}
+
+}  // namespace cadlod

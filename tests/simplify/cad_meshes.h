@@ -1,0 +1,202 @@
+// CAD-like tessellations for the simplifier's tests and benchmarks, generated the way CAD
+// exporters triangulate B-rep faces: surfaces of revolution as long strips between
+// profile rings (two triangles per segment, no interior vertices), flat end faces as
+// fans from the centre, flat faces as fans from one corner. Everything shares vertices
+// within a part and is consistently oriented (outward normals).
+#pragma once
+
+#include "core/layer_metadata.h"
+
+#include <vcg/complex/complex.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace cadlod::test {
+
+// A triangle soup with shared vertices, built part by part, then turned into any vcglib mesh.
+struct CadBuilder {
+    std::vector<std::array<double, 3>> points;
+    std::vector<std::array<int, 3>> triangles;
+    std::vector<int> part;  // per triangle
+    int currentPart = 0;
+
+    int addPoint(double x, double y, double z)
+    {
+        points.push_back({x, y, z});
+        return int(points.size()) - 1;
+    }
+    void addTriangle(int a, int b, int c)
+    {
+        if (a == b || b == c || c == a)
+            return;
+        triangles.push_back({a, b, c});
+        part.push_back(currentPart);
+    }
+    void translate(int firstPoint, double dx, double dy, double dz)
+    {
+        for (std::size_t i = firstPoint; i < points.size(); ++i) {
+            points[i][0] += dx;
+            points[i][1] += dy;
+            points[i][2] += dz;
+        }
+    }
+
+    // Into a vcglib mesh; withParts also stores the cadlod_part attribute and part table.
+    template <class MeshType>
+    void build(MeshType& m, bool withParts = false) const
+    {
+        m.Clear();
+        auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, points.size());
+        for (std::size_t i = 0; i < points.size(); ++i, ++vi)
+            vi->P() = typename MeshType::CoordType(points[i][0], points[i][1], points[i][2]);
+        auto fi = vcg::tri::Allocator<MeshType>::AddFaces(m, triangles.size());
+        for (std::size_t i = 0; i < triangles.size(); ++i, ++fi)
+            for (int j = 0; j < 3; ++j)
+                fi->V(j) = &m.vert[triangles[i][j]];
+        if (withParts) {
+            auto handle = cadlod::facePartHandle(m);
+            for (std::size_t i = 0; i < triangles.size(); ++i)
+                handle[i] = part[i];
+            auto table = cadlod::partTableHandle(m);
+            const int parts = part.empty() ? 0 : *std::max_element(part.begin(), part.end()) + 1;
+            table().resize(parts);
+            for (int p = 0; p < parts; ++p)
+                table()[p].name = "part" + std::to_string(p);
+        }
+        vcg::tri::UpdateBounding<MeshType>::Box(m);
+    }
+};
+
+struct ProfilePoint {
+    double z, r;
+};
+
+struct RevolveSpec {
+    int segments = 64;         // around the axis
+    int cylinderRings = 1;     // subdivisions of spans of constant radius (1: long strips)
+    double keywayHalfAngle = 0;// > 0: vertices of the keyway span within ±angle (rad) of +x
+    double keywayZ0 = 0, keywayZ1 = 0;  // ... and z in [z0, z1] are flattened onto a plane
+};
+
+// Surface of revolution of a profile (z increasing along the part, r = 0 closes with a
+// fan). Returns the index of the first point added.
+inline int revolve(CadBuilder& b, const std::vector<ProfilePoint>& profile, const RevolveSpec& spec)
+{
+    const int first = int(b.points.size());
+    const int n = spec.segments;
+    auto addRing = [&](double z, double r) {
+        std::vector<int> ring(n);
+        if (r == 0) {
+            const int c = b.addPoint(0, 0, z);
+            std::fill(ring.begin(), ring.end(), c);
+            return ring;
+        }
+        for (int j = 0; j < n; ++j) {
+            const double t = 2 * M_PI * j / n;
+            double x = r * std::cos(t), y = r * std::sin(t);
+            if (spec.keywayHalfAngle > 0 && z >= spec.keywayZ0 && z <= spec.keywayZ1 &&
+                std::abs(std::remainder(t, 2 * M_PI)) < spec.keywayHalfAngle)
+                x = std::min(x, r * std::cos(spec.keywayHalfAngle));
+            ring[j] = b.addPoint(x, y, z);
+        }
+        return ring;
+    };
+    auto band = [&](const std::vector<int>& a, const std::vector<int>& c) {
+        for (int j = 0; j < n; ++j) {
+            const int k = (j + 1) % n;
+            b.addTriangle(a[j], a[k], c[k]);
+            b.addTriangle(a[j], c[k], c[j]);
+        }
+    };
+    std::vector<int> previous = addRing(profile[0].z, profile[0].r);
+    for (std::size_t i = 1; i < profile.size(); ++i) {
+        const ProfilePoint& p0 = profile[i - 1];
+        const ProfilePoint& p1 = profile[i];
+        const int steps = (p0.r == p1.r && p0.r > 0) ? std::max(1, spec.cylinderRings) : 1;
+        for (int s = 1; s <= steps; ++s) {
+            const double t = double(s) / steps;
+            std::vector<int> next = addRing(p0.z + (p1.z - p0.z) * t, p0.r + (p1.r - p0.r) * t);
+            band(previous, next);
+            previous = std::move(next);
+        }
+    }
+    return first;
+}
+
+// A stepped shaft with chamfers, shoulders and a flat keyway on the last step: 100 long,
+// radius 10..15. centerBore > 0 replaces the end fans with centre-drill annuli.
+inline std::vector<ProfilePoint> shaftProfile(double centerBore = 0)
+{
+    return {{0, centerBore}, {0, 9},   {1, 10},  {40, 10},  {40, 14},  {41, 15},
+            {70, 15},        {70, 12}, {100, 12}, {101, 11}, {101, centerBore}};
+}
+
+inline RevolveSpec shaftSpec(int segments, int cylinderRings = 1)
+{
+    RevolveSpec s;
+    s.segments = segments;
+    s.cylinderRings = cylinderRings;
+    s.keywayHalfAngle = 0.5;
+    s.keywayZ0 = 70;
+    s.keywayZ1 = 100;
+    return s;
+}
+
+// Triangles a shaft of shaftProfile() gets with these settings.
+inline int shaftTriangles(int segments, int cylinderRings, bool fans)
+{
+    return segments * ((fans ? 2 : 4) + 2 * 5 + 2 * 3 * cylinderRings);
+}
+
+// A closed box (sizeX × sizeY × thickness) whose large faces are fans from one corner
+// over `perEdge` points per side, and whose sides are strips: the slivers CAD exporters
+// make of big planar faces.
+inline int fannedPlate(CadBuilder& b, double sizeX, double sizeY, double thickness, int perEdge)
+{
+    const int first = int(b.points.size());
+    std::vector<std::array<double, 2>> outline;  // counter-clockwise seen from +z
+    for (int i = 0; i < perEdge; ++i) outline.push_back({sizeX * i / perEdge, 0});
+    for (int i = 0; i < perEdge; ++i) outline.push_back({sizeX, sizeY * i / perEdge});
+    for (int i = 0; i < perEdge; ++i) outline.push_back({sizeX - sizeX * i / perEdge, sizeY});
+    for (int i = 0; i < perEdge; ++i) outline.push_back({0, sizeY - sizeY * i / perEdge});
+    const int n = int(outline.size());
+    std::vector<int> bottom(n), top(n);
+    for (int i = 0; i < n; ++i) {
+        bottom[i] = b.addPoint(outline[i][0], outline[i][1], 0);
+        top[i] = b.addPoint(outline[i][0], outline[i][1], thickness);
+    }
+    for (int i = 1; i + 1 < n; ++i) {
+        b.addTriangle(top[0], top[i], top[i + 1]);
+        b.addTriangle(bottom[0], bottom[i + 1], bottom[i]);
+    }
+    for (int i = 0; i < n; ++i) {
+        const int k = (i + 1) % n;
+        b.addTriangle(bottom[i], bottom[k], top[k]);
+        b.addTriangle(bottom[i], top[k], top[i]);
+    }
+    return first;
+}
+
+// A small multi-part assembly: a shaft, a base plate, two bolts (separate parts).
+inline void assembly(CadBuilder& b, int segments)
+{
+    b.currentPart = 0;
+    revolve(b, shaftProfile(), shaftSpec(segments));
+    b.currentPart = 1;
+    const int plate = fannedPlate(b, 120, 60, 8, std::max(8, segments / 4));
+    b.translate(plate, -10, -30, -20);
+    for (int bolt = 0; bolt < 2; ++bolt) {
+        b.currentPart = 2 + bolt;
+        RevolveSpec s;
+        s.segments = std::max(8, segments / 2);
+        const int first = revolve(b, {{0, 0}, {0, 7}, {5, 7}, {5, 4}, {30, 4}, {30.5, 3.5}, {30.5, 0}}, s);
+        b.translate(first, 20 + 60 * bolt, 20, -25);
+    }
+}
+
+}  // namespace cadlod::test

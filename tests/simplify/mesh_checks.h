@@ -1,0 +1,89 @@
+// Measures of a simplified mesh against its original, shared by the simplifier's tests
+// and benchmarks: folded faces, non-manifold edges, boundary edges.
+#pragma once
+
+#include "core/hausdorff.h"
+
+#include <vcg/complex/complex.h>
+#include <vcg/space/index/grid_static_ptr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace cadlod::test {
+
+// Edges (as sorted vertex-index pairs) of live faces, with how many faces use each.
+template <class MeshType>
+std::vector<std::pair<std::pair<int, int>, int>> edgeUse(const MeshType& m)
+{
+    std::vector<std::pair<int, int>> edges;
+    for (const auto& f : m.face)
+        if (!f.IsD())
+            for (int j = 0; j < 3; ++j) {
+                int a = int(f.cV(j) - &m.vert[0]), b = int(f.cV((j + 1) % 3) - &m.vert[0]);
+                edges.push_back({std::min(a, b), std::max(a, b)});
+            }
+    std::sort(edges.begin(), edges.end());
+    std::vector<std::pair<std::pair<int, int>, int>> use;
+    for (const auto& e : edges) {
+        if (!use.empty() && use.back().first == e)
+            ++use.back().second;
+        else
+            use.push_back({e, 1});
+    }
+    return use;
+}
+
+template <class MeshType>
+int nonManifoldEdges(const MeshType& m)
+{
+    int n = 0;
+    for (const auto& e : edgeUse(m))
+        n += e.second > 2;
+    return n;
+}
+
+template <class MeshType>
+int boundaryEdgeCount(const MeshType& m)
+{
+    int n = 0;
+    for (const auto& e : edgeUse(m))
+        n += e.second == 1;
+    return n;
+}
+
+template <class FaceType>
+vcg::Point3d unitNormal(const FaceType& f)
+{
+    const vcg::Point3d a = vcg::Point3d::Construct(f.cP(0));
+    vcg::Point3d n = (vcg::Point3d::Construct(f.cP(1)) - a) ^ (vcg::Point3d::Construct(f.cP(2)) - a);
+    const double len = n.Norm();
+    return len > 0 ? n / len : vcg::Point3d(0, 0, 0);
+}
+
+// Faces of `result` whose normal turns more than `limitDeg` away from the original face
+// closest to their centroid (degenerate faces count as folded).
+template <class MeshResult, class MeshOriginal>
+int foldedFaces(MeshResult& result, MeshOriginal& original, double limitDeg = 90.0)
+{
+    cadlod::detail::ClosestFace<MeshOriginal> closest(original);
+    if (closest.empty())
+        return 0;
+    const double cosLimit = std::cos(limitDeg * M_PI / 180.0);
+    int folded = 0;
+    for (auto& f : result.face) {
+        if (f.IsD())
+            continue;
+        const vcg::Point3d n = unitNormal(f);
+        const auto centroid = (f.cP(0) + f.cP(1) + f.cP(2)) / 3;
+        double d = 0;
+        const auto* nearest = closest.find(vcg::Point3d::Construct(centroid), d);
+        if (n.SquaredNorm() == 0 || (nearest && n * unitNormal(*nearest) < cosLimit))
+            ++folded;
+    }
+    return folded;
+}
+
+}  // namespace cadlod::test

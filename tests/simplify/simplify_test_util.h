@@ -1,0 +1,44 @@
+// Small helpers shared by the simplifier's unit tests.
+#pragma once
+
+#include "cad_meshes.h"
+#include "test_mesh.h"
+
+#include "core/simplify.h"
+
+#include <vcg/complex/append.h>
+
+namespace cadlod::test {
+
+inline void copyMesh(TestMesh& dst, TestMesh& src)
+{
+    vcg::tri::Append<TestMesh, TestMesh>::MeshCopy(dst, src);
+    vcg::tri::UpdateBounding<TestMesh>::Box(dst);
+}
+
+inline void makeShaft(TestMesh& m, int segments, int rings = 1)
+{
+    CadBuilder b;
+    revolve(b, shaftProfile(), shaftSpec(segments, rings));
+    b.build(m);
+}
+
+// An open tube: a cylinder of long strips without caps (two boundary circles).
+inline void makeTube(TestMesh& m, int segments, int rings = 1)
+{
+    CadBuilder b;
+    RevolveSpec s;
+    s.segments = segments;
+    s.cylinderRings = rings;
+    revolve(b, {{0, 10}, {60, 10}}, s);
+    b.build(m);
+}
+
+inline SimplifyParams targetParams(int faces)
+{
+    SimplifyParams p;
+    p.targetFaces = faces;
+    return p;
+}
+
+}  // namespace cadlod::test

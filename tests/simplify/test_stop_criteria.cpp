@@ -1,0 +1,70 @@
+// Stop criteria: target face count (±2) on closed and open meshes, reduction
+// percentage, and the maximum-error bound.
+#include "simplify_test_util.h"
+
+#include "core/hausdorff.h"
+
+#include <gtest/gtest.h>
+
+using namespace cadlod;
+using namespace cadlod::test;
+
+TEST(SimplifyStop, ReachesTargetFacesOnClosedShaft)
+{
+    TestMesh m;
+    makeShaft(m, 256);
+    const int before = m.fn;
+    ASSERT_EQ(before, shaftTriangles(256, 1, true));
+    const SimplifyStats s = simplify(m, targetParams(before / 10));
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_EQ(s.facesBefore, before);
+    EXPECT_NEAR(m.fn, before / 10, 2) << s.message;
+    EXPECT_EQ(s.facesAfter, m.fn);
+    EXPECT_GT(s.collapses, 0);
+}
+
+TEST(SimplifyStop, ReachesTargetFacesOnOpenTube)
+{
+    TestMesh m;
+    makeTube(m, 200, 4);
+    const int before = m.fn;
+    const SimplifyStats s = simplify(m, targetParams(before / 4));
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_NEAR(m.fn, before / 4, 2) << s.message;
+    EXPECT_GT(s.boundaryEdges, 0);
+}
+
+TEST(SimplifyStop, ReductionPercentage)
+{
+    TestMesh m;
+    makeShaft(m, 128);
+    const int before = m.fn;
+    SimplifyParams p;
+    p.reductionPerc = 50;
+    const SimplifyStats s = simplify(m, p);
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_EQ(s.targetFaces, before / 2);
+    EXPECT_NEAR(m.fn, before / 2, 2);
+}
+
+TEST(SimplifyStop, MaxErrorIsHonoured)
+{
+    TestMesh original, m;
+    makeShaft(original, 256);
+    copyMesh(m, original);
+    SimplifyParams p;
+    p.maxError = 1e-3;
+    const SimplifyStats s = simplify(m, p);
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_LT(m.fn, original.fn / 2);      // it did simplify ...
+    EXPECT_LE(s.largestErrorFraction(), p.maxError);  // ... within the bound
+    const SymmetricHausdorff h = symmetricHausdorff(original, m, 20000);
+    EXPECT_LE(h.maxFraction(), 4 * p.maxError);  // RMS bound, so the true max is close
+
+    // A tighter bound stops earlier.
+    TestMesh tight;
+    copyMesh(tight, original);
+    p.maxError = 1e-5;
+    simplify(tight, p);
+    EXPECT_GT(tight.fn, m.fn);
+}
