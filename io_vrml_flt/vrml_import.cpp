@@ -1,12 +1,141 @@
-// Temporary: replaced by the VRML adapter (issue 5).
+// VRML import adapter: runs the MeshLab-independent reader (vrml/) and copies its
+// neutral scene into a CMeshO, with the part table and per-face part ids that the
+// simplifier and the OpenFlight exporter read (filter_cadlod/core/layer_metadata.h).
 #include "format_adapters.h"
 
+#include "core/layer_metadata.h"
+#include "vrml/importer.h"
+
+#include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <wrap/io_trimesh/io_mask.h>
+
+#include <QElapsedTimer>
+
+#include <algorithm>
+
 namespace cadlod {
-void vrmlOpenParameters(RichParameterList&) {}
-bool openVrml(MeshIOInterface&, const QString& fileName, MeshModel&, int&, const RichParameterList&,
-              vcg::CallBackPos*, QString& error)
+namespace {
+
+constexpr const char* kUnitScale = "vrmlUnitScale";
+constexpr const char* kMergeVertices = "vrmlMergeVertices";
+constexpr const char* kMergeTolerance = "vrmlMergeTolerance";
+constexpr const char* kNormals = "vrmlNormals";
+
+vcg::Color4b toColor(const vrml::Rgba8& c) { return vcg::Color4b(c[0], c[1], c[2], c[3]); }
+
+vcg::Color4b toColor(const std::array<float, 4>& c)
 {
-    error = fileName + ": VRML import is not available in this build yet";
-    return false;
+    auto b = [](float x) { return (unsigned char)std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f); };
+    return vcg::Color4b(b(c[0]), b(c[1]), b(c[2]), b(c[3]));
 }
+
+void copyScene(const vrml::Scene& scene, CMeshO& m, vcg::CallBackPos* cb)
+{
+    auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, scene.vertexCount());
+    auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, scene.triangleCount());
+    auto partOf = facePartHandle(m);
+    PartTable& table = partTableHandle(m)();
+    table.clear();
+    size_t done = 0;
+    for (size_t p = 0; p < scene.parts.size(); ++p) {
+        const vrml::Part& part = scene.parts[p];
+        table.push_back({part.name, part.color});
+        const vcg::Color4b partColor = toColor(part.color);
+        CMeshO::VertexIterator first = vi;
+        for (size_t i = 0; i < part.positions.size(); ++i, ++vi) {
+            vi->P() = vcg::Point3f(part.positions[i][0], part.positions[i][1], part.positions[i][2]);
+            if (!part.normals.empty())
+                vi->N() = vcg::Point3f(part.normals[i][0], part.normals[i][1], part.normals[i][2]);
+            vi->C() = part.colors.empty() ? partColor : toColor(part.colors[i]);
+        }
+        for (size_t t = 0; t < part.triangleCount(); ++t, ++fi) {
+            for (int k = 0; k < 3; ++k) fi->V(k) = &*(first + part.triangles[3 * t + size_t(k)]);
+            fi->C() = part.faceColors.empty() ? partColor : toColor(part.faceColors[t]);
+            partOf[fi] = int(p);
+        }
+        done += part.triangleCount();
+        if (cb) cb(60 + int(30.0 * double(done) / double(std::max<size_t>(1, scene.triangleCount()))), "Building mesh");
+    }
+}
+
+int mergeVertices(CMeshO& m, float tolerance)
+{
+    const int merged = tolerance > 0 ? vcg::tri::Clean<CMeshO>::MergeCloseVertex(m, tolerance)
+                                     : vcg::tri::Clean<CMeshO>::RemoveDuplicateVertex(m, false);
+    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
+    return merged;
+}
+
+void logDiagnostics(MeshIOInterface& plugin, const vrml::Diagnostics& diag)
+{
+    if (diag.total() == 0) return;
+    std::string summary = "VRML import warnings:";
+    for (const auto& [kind, count] : diag.counts()) summary += " " + kind + " " + std::to_string(count) + ";";
+    plugin.Log(GLLogStream::WARNING, summary);
+    constexpr size_t kShown = 12;  // the first few in full; counts above say how many more
+    for (size_t i = 0; i < diag.kept().size() && i < kShown; ++i) {
+        const vrml::Diagnostic& d = diag.kept()[i];
+        plugin.Log(GLLogStream::WARNING, d.where + ": " + d.kind + ": " + d.message);
+    }
+}
+
+}  // namespace
+
+void vrmlOpenParameters(RichParameterList& par)
+{
+    par.addParam(RichFloat(kUnitScale, 1.0f, "Unit scale",
+                           "Multiplies every coordinate, e.g. 0.001 to read a file in mm as meters."));
+    par.addParam(RichBool(kMergeVertices, true, "Merge coincident vertices",
+                          "CAD exporters split a body into one face set per face or material; merging "
+                          "identical points rejoins them into one connected mesh, which the simplifier needs."));
+    par.addParam(RichFloat(kMergeTolerance, 0.0f, "Merge tolerance",
+                           "Largest distance (model units, after scaling) between merged vertices; 0 merges "
+                           "only identical points, never closing real small gaps."));
+    par.addParam(RichEnum(kNormals, 0, QStringList{"Keep file normals", "Recompute from creaseAngle"}, "Normals",
+                          "Keep the normals the file gives (creaseAngle where it gives none), or ignore them "
+                          "and recompute everything from creaseAngle."));
+}
+
+bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, int& mask,
+              const RichParameterList& par, vcg::CallBackPos* cb, QString& error)
+{
+    QElapsedTimer timer;
+    timer.start();
+    vrml::ImportOptions options;
+    options.unitScale = par.hasParameter(kUnitScale) ? par.getFloat(kUnitScale) : 1.0f;
+    options.recomputeNormals = par.hasParameter(kNormals) && par.getEnum(kNormals) == 1;
+    if (cb) options.progress = [cb](double f) { cb(int(60 * f), "Reading VRML"); };
+
+    vrml::ImportResult result = vrml::importVrmlFile(fileName.toStdString(), options);
+    if (!result.ok()) {
+        error = QString::fromStdString(result.error);
+        plugin.Log(GLLogStream::WARNING, result.error);
+        return false;
+    }
+    const vrml::Scene& scene = result.scene;
+    const qint64 parsedMs = timer.elapsed();
+    mask = vcg::tri::io::Mask::IOM_VERTNORMAL | vcg::tri::io::Mask::IOM_VERTCOLOR | vcg::tri::io::Mask::IOM_FACECOLOR;
+    m.Enable(mask);
+    copyScene(scene, m.cm, cb);
+    result.scene.parts.clear();
+
+    const bool merge = !par.hasParameter(kMergeVertices) || par.getBool(kMergeVertices);
+    const int merged = merge ? mergeVertices(m.cm, par.hasParameter(kMergeTolerance) ? par.getFloat(kMergeTolerance) : 0.0f) : 0;
+    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m.cm);
+    vcg::tri::UpdateBounding<CMeshO>::Box(m.cm);
+
+    const double seconds = std::max(1e-6, timer.elapsed() / 1000.0);
+    plugin.Log("VRML %d import of %s: %zu parts, %d triangles, %d vertices (%d merged), %zu shapes, "
+               "%zu faces skipped, %zu line/point sets ignored, %zu inlines; %.1f MB in %.2f s (read %.2f s), %.1f MB/s",
+               scene.version == 1 ? 1 : 2, qUtf8Printable(fileName), partTableHandle(m.cm)().size(), m.cm.fn,
+               m.cm.vn, merged, scene.stats.shapes, scene.stats.skippedFaces,
+               scene.stats.lineSets + scene.stats.pointSets, scene.stats.inlinesLoaded,
+               scene.stats.bytesRead / 1e6, seconds, parsedMs / 1000.0, scene.stats.bytesRead / 1e6 / seconds);
+    logDiagnostics(plugin, scene.diagnostics);
+    if (cb) cb(100, "VRML import done");
+    return true;
+}
+
 }  // namespace cadlod

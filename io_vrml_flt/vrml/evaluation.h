@@ -1,0 +1,50 @@
+// Shared state of the scene evaluators (VRML97: evaluator97.cpp, VRML 1.0:
+// evaluator10.cpp): the scene being built, parts keyed by owner and color, and the
+// Inline loader (importer.cpp) that can switch between versions per file.
+#pragma once
+
+#include "vrml/face_set_emitter.h"
+#include "vrml/importer.h"
+#include "vrml/node.h"
+
+#include <functional>
+#include <map>
+#include <string>
+#include <tuple>
+
+namespace cadlod::vrml {
+
+// Faces belong to the part of their owner: the nearest DEF'd node on the traversal path
+// (one owner per traversal instance, so two USEs of a DEF'd part are two parts), or the
+// Shape itself, named by its path, when nothing above it has a DEF.
+struct Owner {
+    int id = -1;
+    std::string name;
+};
+
+struct EvalContext {
+    Scene& scene;
+    const ImportOptions& options;
+    EmitOptions emit;
+    std::string baseDir;  // of the file being evaluated, for Inline urls
+    // Loads and evaluates an Inline url under `world`; `where` is the Inline's location.
+    std::function<void(const std::vector<std::string>& urls, const std::string& where, const Mat4& world,
+                       const Owner& owner)> loadInline;
+
+    Owner newOwner(const std::string& name) { return {nextOwnerId++, name}; }
+    Part& part(const Owner& owner, const std::array<float, 4>& color);
+
+    int nextOwnerId = 0;
+    std::map<std::tuple<int, float, float, float, float>, size_t> partIndex;
+};
+
+void evaluateVrml97(const std::vector<NodePtr>& roots, const Mat4& world, const Owner& owner, const std::string& path,
+                    EvalContext& ctx);
+void evaluateVrml10(const std::vector<NodePtr>& roots, const Mat4& world, const Owner& owner, const std::string& path,
+                    EvalContext& ctx);
+
+// Emits an owned face set (primitives) with the given material color.
+void emitOwnedFaceSet(const struct OwnedFaceSet& f, const std::string& where, const Mat4& world, Part& part,
+                      EvalContext& ctx);
+
+}  // namespace cadlod::vrml

@@ -1,0 +1,267 @@
+// VRML97 scene evaluation: grouping nodes compose world transforms, Shapes emit their
+// geometry into parts.
+#include "vrml/evaluation.h"
+#include "vrml/primitives.h"
+#include "vrml/transform.h"
+
+#include <set>
+
+namespace cadlod::vrml {
+namespace {
+
+using Binding = AttributeSource::Binding;
+
+const std::set<std::string>& ignoredNodeTypes()
+{
+    static const std::set<std::string> types{
+        "Viewpoint", "NavigationInfo", "WorldInfo", "Background", "Fog", "DirectionalLight", "PointLight",
+        "SpotLight", "Sound", "AudioClip", "Script", "TimeSensor", "TouchSensor", "PlaneSensor",
+        "SphereSensor", "CylinderSensor", "ProximitySensor", "VisibilitySensor", "PositionInterpolator",
+        "OrientationInterpolator", "ColorInterpolator", "ScalarInterpolator", "CoordinateInterpolator",
+        "NormalInterpolator", "MovieTexture", "ImageTexture", "PixelTexture", "TextureTransform",
+        "KeySensor", "StringSensor", "BooleanFilter", "BooleanSequencer", "BooleanToggle", "BooleanTrigger",
+        "IntegerSequencer", "IntegerTrigger", "TimeTrigger", "OrthoViewpoint", "EnvironmentLight",
+        "X3DPrototypeInstance", "MetadataString", "MetadataFloat", "MetadataInteger", "MetadataSet",
+        "MetadataDouble", "MetadataBoolean", "LogicalNodes", "ColorRGBA"};
+    return types;
+}
+
+const std::set<std::string>& groupNodeTypes()
+{
+    static const std::set<std::string> types{"Group", "Billboard", "Anchor", "Collision", "StaticGroup",
+                                             "CADAssembly", "CADLayer", "CADFace", "KambiInline"};
+    return types;
+}
+
+const FieldValue* nodesField(const Node& n, const char* name)
+{
+    const FieldValue* v = n.field(name);
+    return v && v->kind == FieldValue::Kind::Nodes ? v : nullptr;
+}
+
+NodePtr nodeField(const Node& n, const char* name)
+{
+    const FieldValue* v = nodesField(n, name);
+    return v && !v->nodes.empty() ? v->nodes.front() : nullptr;
+}
+
+std::vector<NodePtr> childNodes(const Node& n, const char* name)
+{
+    std::vector<NodePtr> out;
+    if (const FieldValue* v = nodesField(n, name)) out = v->nodes;
+    out.insert(out.end(), n.children.begin(), n.children.end());
+    return out;
+}
+
+std::vector<std::string> stringsField(const Node& n, const char* name)
+{
+    const FieldValue* v = n.field(name);
+    return v && (v->kind == FieldValue::Kind::Strings || v->kind == FieldValue::Kind::Words) ? v->strings
+                                                                                            : std::vector<std::string>{};
+}
+
+const std::vector<int32_t>* nonEmptyInts(const Node& n, const char* name)
+{
+    const std::vector<int32_t>* v = intsField(n, name);
+    return v && !v->empty() ? v : nullptr;
+}
+
+const std::vector<float>* pointsOf(const NodePtr& n, const char* name)
+{
+    return n ? floatsField(*n, name) : nullptr;
+}
+
+class Evaluator97 {
+public:
+    explicit Evaluator97(EvalContext& ctx) : ctx_(ctx) {}
+
+    void traverse(const NodePtr& node, const Mat4& world, const Owner& owner, const std::string& path, int depth)
+    {
+        if (!node) return;
+        if (depth > ctx_.options.maxNesting) {
+            ctx_.scene.diagnostics.warn("too deep", node->where, "scene nesting too deep; subtree skipped");
+            return;
+        }
+        const Owner here = node->defName.empty() ? owner : ctx_.newOwner(node->defName);
+        const std::string& type = node->type;
+        if (type == "Transform" || type == "CADPart") {
+            const Mat4 local = transformMatrix(readTransformFields(*node, "scale"));
+            traverseAll(childNodes(*node, "children"), world * local, here, path + "/" + type, depth);
+        } else if (groupNodeTypes().count(type)) {
+            traverseAll(childNodes(*node, "children"), world, here, path + "/" + type, depth);
+        } else if (type == "Switch") {
+            traverseSwitch(*node, world, here, path, depth);
+        } else if (type == "LOD") {
+            std::vector<NodePtr> levels = childNodes(*node, nodesField(*node, "level") ? "level" : "children");
+            if (!levels.empty()) traverse(levels.front(), world, here, path + "/LOD", depth + 1);
+        } else if (type == "Inline") {
+            ctx_.loadInline(stringsField(*node, "url"), node->where, world, here);
+        } else if (type == "Shape") {
+            shape(*node, world, here.id < 0 ? ctx_.newOwner(path + "/Shape") : here);
+        } else if (!ignoredNodeTypes().count(type)) {
+            ctx_.scene.diagnostics.warn("unknown node", node->where, "node " + type + " ignored");
+        }
+    }
+
+private:
+    void traverseAll(const std::vector<NodePtr>& nodes, const Mat4& world, const Owner& owner, const std::string& path,
+                     int depth)
+    {
+        for (size_t i = 0; i < nodes.size(); ++i)
+            traverse(nodes[i], world, owner, path + "[" + std::to_string(i) + "]", depth + 1);
+    }
+
+    void traverseSwitch(const Node& node, const Mat4& world, const Owner& owner, const std::string& path, int depth)
+    {
+        const int which = int(floatField(node, "whichChoice", -1));
+        const std::vector<NodePtr> choices = childNodes(node, nodesField(node, "choice") ? "choice" : "children");
+        if (which >= 0 && size_t(which) < choices.size())
+            traverse(choices[size_t(which)], world, owner, path + "/Switch", depth + 1);
+    }
+
+    std::array<float, 4> materialColor(const Node& shape)
+    {
+        std::array<float, 4> color{0.8f, 0.8f, 0.8f, 1.0f};
+        const NodePtr appearance = nodeField(shape, "appearance");
+        const NodePtr material = appearance ? nodeField(*appearance, "material") : nullptr;
+        if (!material) return color;
+        const Vec3 d = vec3Field(*material, "diffuseColor", {0.8, 0.8, 0.8});
+        color = {float(d.x), float(d.y), float(d.z), 1.0f - floatField(*material, "transparency", 0.0f)};
+        return color;
+    }
+
+    void shape(const Node& node, const Mat4& world, const Owner& owner)
+    {
+        const NodePtr geometry = nodeField(node, "geometry");
+        if (!geometry) return;
+        ++ctx_.scene.stats.shapes;
+        const std::string& type = geometry->type;
+        if (type == "IndexedLineSet" || type == "LineSet") {
+            ++ctx_.scene.stats.lineSets;
+            return;
+        }
+        if (type == "PointSet") {
+            ++ctx_.scene.stats.pointSets;
+            return;
+        }
+        Part& part = ctx_.part(owner, materialColor(node));
+        if (type == "IndexedFaceSet") indexedFaceSet(*geometry, world, part);
+        else if (type == "Box") emitOwnedFaceSet(makeBox(vec3Field(*geometry, "size", {2, 2, 2})), geometry->where, world, part, ctx_);
+        else if (type == "Sphere") emitOwnedFaceSet(makeSphere(floatField(*geometry, "radius", 1)), geometry->where, world, part, ctx_);
+        else if (type == "Cylinder") cylinder(*geometry, world, part);
+        else if (type == "Cone") cone(*geometry, world, part);
+        else if (type == "ElevationGrid") elevationGrid(*geometry, world, part);
+        else if (type == "Extrusion") extrusion(*geometry, world, part);
+        else ctx_.scene.diagnostics.warn("unsupported geometry", geometry->where, "geometry " + type + " ignored");
+    }
+
+    void cylinder(const Node& g, const Mat4& world, Part& part)
+    {
+        emitOwnedFaceSet(makeCylinder(floatField(g, "radius", 1), floatField(g, "height", 2), boolField(g, "side", true),
+                                      boolField(g, "top", true), boolField(g, "bottom", true)),
+                         g.where, world, part, ctx_);
+    }
+
+    void cone(const Node& g, const Mat4& world, Part& part)
+    {
+        emitOwnedFaceSet(makeCone(floatField(g, "bottomRadius", 1), floatField(g, "height", 2), boolField(g, "side", true),
+                                  boolField(g, "bottom", true)),
+                         g.where, world, part, ctx_);
+    }
+
+    // colorPerVertex / normalPerVertex index rules (VRML97 6.23): an empty index array
+    // falls back to coordIndex per vertex, to the face order per face.
+    static AttributeSource binding(const std::vector<float>* values, int components, bool perVertex,
+                                   const std::vector<int32_t>* index, const std::vector<int32_t>* coordIndex)
+    {
+        AttributeSource a;
+        if (!values || values->empty()) return a;
+        a.values = values;
+        a.components = components;
+        a.binding = perVertex ? Binding::PerCorner : Binding::PerFace;
+        a.index = index ? index : (perVertex ? coordIndex : nullptr);
+        return a;
+    }
+
+    void indexedFaceSet(const Node& g, const Mat4& world, Part& part)
+    {
+        FaceSetInput in;
+        in.coords = pointsOf(nodeField(g, "coord"), "point");
+        in.coordIndex = intsField(g, "coordIndex");
+        in.where = g.where;
+        if (!in.coords || !in.coordIndex) return;
+        const NodePtr color = nodeField(g, "color");
+        in.colors = binding(pointsOf(color, "color"), color && color->type == "ColorRGBA" ? 4 : 3,
+                            boolField(g, "colorPerVertex", true), nonEmptyInts(g, "colorIndex"), in.coordIndex);
+        in.normals = binding(pointsOf(nodeField(g, "normal"), "vector"), 3, boolField(g, "normalPerVertex", true),
+                             nonEmptyInts(g, "normalIndex"), in.coordIndex);
+        in.texCoords = binding(pointsOf(nodeField(g, "texCoord"), "point"), 2, true, nonEmptyInts(g, "texCoordIndex"),
+                               in.coordIndex);
+        in.ccw = boolField(g, "ccw", true);
+        in.convex = boolField(g, "convex", true);
+        in.creaseAngle = floatField(g, "creaseAngle", 0);
+        emitFaceSet(in, world, ctx_.emit, part, ctx_.scene.diagnostics, ctx_.scene.stats);
+    }
+
+    void elevationGrid(const Node& g, const Mat4& world, Part& part)
+    {
+        const std::vector<float>* heights = floatsField(g, "height");
+        OwnedFaceSet f = makeElevationGrid(int(floatField(g, "xDimension", 0)), int(floatField(g, "zDimension", 0)),
+                                           floatField(g, "xSpacing", 1), floatField(g, "zSpacing", 1),
+                                           heights ? *heights : std::vector<float>{});
+        FaceSetInput in;
+        in.coords = &f.coords;
+        in.coordIndex = &f.coordIndex;
+        in.where = g.where;
+        const NodePtr color = nodeField(g, "color");
+        in.colors = binding(pointsOf(color, "color"), 3, boolField(g, "colorPerVertex", true), nullptr, &f.coordIndex);
+        in.normals = binding(pointsOf(nodeField(g, "normal"), "vector"), 3, boolField(g, "normalPerVertex", true),
+                             nullptr, &f.coordIndex);
+        in.texCoords = binding(pointsOf(nodeField(g, "texCoord"), "point"), 2, true, nullptr, &f.coordIndex);
+        in.ccw = boolField(g, "ccw", true);
+        in.creaseAngle = floatField(g, "creaseAngle", 0);
+        emitFaceSet(in, world, ctx_.emit, part, ctx_.scene.diagnostics, ctx_.scene.stats);
+    }
+
+    void extrusion(const Node& g, const Mat4& world, Part& part)
+    {
+        ExtrusionSpec spec;
+        if (const auto* v = floatsField(g, "crossSection")) spec.crossSection = *v;
+        if (const auto* v = floatsField(g, "spine")) spec.spine = *v;
+        if (const auto* v = floatsField(g, "scale")) spec.scale = *v;
+        if (const auto* v = floatsField(g, "orientation")) spec.orientation = *v;
+        spec.beginCap = boolField(g, "beginCap", true);
+        spec.endCap = boolField(g, "endCap", true);
+        OwnedFaceSet f = makeExtrusion(spec);
+        f.ccw = boolField(g, "ccw", true);
+        f.convex = boolField(g, "convex", true);
+        f.creaseAngle = floatField(g, "creaseAngle", 0);
+        emitOwnedFaceSet(f, g.where, world, part, ctx_);
+    }
+
+    EvalContext& ctx_;
+};
+
+}  // namespace
+
+void emitOwnedFaceSet(const OwnedFaceSet& f, const std::string& where, const Mat4& world, Part& part,
+                      EvalContext& ctx)
+{
+    FaceSetInput in;
+    in.coords = &f.coords;
+    in.coordIndex = &f.coordIndex;
+    in.ccw = f.ccw;
+    in.convex = f.convex;
+    in.creaseAngle = f.creaseAngle;
+    in.where = where;
+    emitFaceSet(in, world, ctx.emit, part, ctx.scene.diagnostics, ctx.scene.stats);
+}
+
+void evaluateVrml97(const std::vector<NodePtr>& roots, const Mat4& world, const Owner& owner, const std::string& path,
+                    EvalContext& ctx)
+{
+    Evaluator97 e(ctx);
+    for (size_t i = 0; i < roots.size(); ++i) e.traverse(roots[i], world, owner, path + "[" + std::to_string(i) + "]", 0);
+}
+
+}  // namespace cadlod::vrml

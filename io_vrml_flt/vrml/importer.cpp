@@ -1,0 +1,216 @@
+#include "vrml/importer.h"
+
+#include "vrml/evaluation.h"
+#include "vrml/parser.h"
+#include "vrml/proto.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <unordered_map>
+
+namespace cadlod::vrml {
+
+Part& EvalContext::part(const Owner& owner, const std::array<float, 4>& color)
+{
+    const auto key = std::make_tuple(owner.id, color[0], color[1], color[2], color[3]);
+    auto it = partIndex.find(key);
+    if (it != partIndex.end()) return scene.parts[it->second];
+    partIndex[key] = scene.parts.size();
+    Part& p = scene.parts.emplace_back();
+    p.name = owner.name;
+    p.color = color;
+    return p;
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct LoadedFile {
+    ParsedFile parsed;
+};
+
+std::string directoryOf(const std::string& path)
+{
+    const fs::path parent = fs::path(path).parent_path();
+    return parent.empty() ? std::string(".") : parent.string();
+}
+
+std::string stripUrl(std::string url, std::string* fragment = nullptr)
+{
+    const size_t hash = url.find('#');
+    if (hash != std::string::npos) {
+        if (fragment) *fragment = url.substr(hash + 1);
+        url.resize(hash);
+    }
+    if (url.rfind("file://", 0) == 0) url = url.substr(7);
+    return url;
+}
+
+class Importer {
+public:
+    explicit Importer(const ImportOptions& options) : options_(options), ctx_{result_.scene, options, {}, {}, {}, 0, {}}
+    {
+        ctx_.emit.recomputeNormals = options.recomputeNormals;
+        ctx_.loadInline = [this](const std::vector<std::string>& urls, const std::string& where, const Mat4& world,
+                                 const Owner& owner) { loadInline(urls, where, world, owner); };
+    }
+
+    ImportResult run(std::string text, const std::string& fileName)
+    {
+        SourceText source = decodeSourceBytes(std::move(text), fileName, options_.maxInflatedBytes);
+        if (!source.ok()) {
+            result_.error = source.error;
+            return std::move(result_);
+        }
+        result_.scene.stats.bytesRead += source.text.size();
+        ParseOptions parse = parseOptions(fileName);
+        if (options_.progress)
+            parse.progress = [this](size_t done, size_t total) {
+                options_.progress(total ? double(done) / double(total) : 1.0);
+            };
+        ParsedFile parsed = parseVrml(source.text, fileName, result_.scene.diagnostics, parse);
+        source.text.clear();
+        source.text.shrink_to_fit();
+        if (!parsed.error.empty()) {
+            result_.error = parsed.error;
+            return std::move(result_);
+        }
+        result_.scene.version = parsed.version == VrmlVersion::V1 ? 1 : 2;
+        openFiles_.push_back(canonical(fileName));
+        evaluate(parsed, fileName, Mat4::scale({options_.unitScale, options_.unitScale, options_.unitScale}), Owner{},
+                 fs::path(fileName).filename().string());
+        return std::move(result_);
+    }
+
+private:
+    static std::string canonical(const std::string& path)
+    {
+        std::error_code ec;
+        const fs::path p = fs::weakly_canonical(fs::path(path), ec);
+        return ec ? path : p.string();
+    }
+
+    ParseOptions parseOptions(const std::string& fileName)
+    {
+        ParseOptions parse;
+        parse.maxDepth = options_.maxNesting;
+        const std::string dir = directoryOf(fileName);
+        parse.externProto = [this, dir](const std::string& url, const std::string& name) {
+            return resolveExternProto(dir, url, name);
+        };
+        return parse;
+    }
+
+    void evaluate(const ParsedFile& parsed, const std::string& fileName, const Mat4& world, const Owner& owner,
+                  const std::string& path)
+    {
+        const std::string savedDir = ctx_.baseDir;
+        ctx_.baseDir = directoryOf(fileName);
+        if (parsed.version == VrmlVersion::V1) evaluateVrml10(parsed.roots, world, owner, path, ctx_);
+        else evaluateVrml97(parsed.roots, world, owner, path, ctx_);
+        ctx_.baseDir = savedDir;
+    }
+
+    // Parsed once per file: assemblies reference the same part file many times.
+    std::shared_ptr<LoadedFile> loadFile(const std::string& path)
+    {
+        const std::string key = canonical(path);
+        auto it = cache_.find(key);
+        if (it != cache_.end()) return it->second;
+        auto file = std::make_shared<LoadedFile>();
+        SourceText source = readSourceText(path, options_.maxInflatedBytes);
+        if (!source.ok()) {
+            file->parsed.error = source.error;
+        } else {
+            result_.scene.stats.bytesRead += source.text.size();
+            file->parsed = parseVrml(source.text, path, result_.scene.diagnostics, parseOptions(path));
+        }
+        cache_[key] = file;
+        return file;
+    }
+
+    std::string resolve(const std::string& baseDir, const std::string& url) const
+    {
+        const fs::path p(url);
+        return p.is_absolute() ? p.string() : (fs::path(baseDir) / p).string();
+    }
+
+    void loadInline(const std::vector<std::string>& urls, const std::string& where, const Mat4& world,
+                    const Owner& owner)
+    {
+        Diagnostics& diag = result_.scene.diagnostics;
+        if (int(openFiles_.size()) > options_.maxInlineDepth) {
+            diag.warn("inline too deep", where, "Inline nesting deeper than " + std::to_string(options_.maxInlineDepth));
+            return;
+        }
+        for (const std::string& raw : urls) {
+            const std::string url = stripUrl(raw);
+            if (url.find("://") != std::string::npos) continue;  // remote: not fetched
+            const std::string path = resolve(ctx_.baseDir, url);
+            std::error_code ec;
+            if (!fs::exists(path, ec)) continue;
+            const std::string key = canonical(path);
+            if (std::find(openFiles_.begin(), openFiles_.end(), key) != openFiles_.end()) {
+                diag.warn("recursive inline", where, "Inline " + url + " includes itself; skipped");
+                return;
+            }
+            std::shared_ptr<LoadedFile> file = loadFile(path);
+            if (!file->parsed.error.empty()) {
+                diag.warn("bad inline", where, file->parsed.error);
+                return;
+            }
+            ++result_.scene.stats.inlinesLoaded;
+            openFiles_.push_back(key);
+            evaluate(file->parsed, path, world, owner, fs::path(path).filename().string());
+            openFiles_.pop_back();
+            return;
+        }
+        std::string list;
+        for (const std::string& u : urls) list += (list.empty() ? "" : ", ") + u;
+        diag.warn("missing inline", where, "Inline file not found: " + (list.empty() ? "(no url)" : list));
+    }
+
+    std::shared_ptr<ProtoDecl> resolveExternProto(const std::string& baseDir, const std::string& rawUrl,
+                                                  const std::string& name)
+    {
+        std::string fragment;
+        const std::string url = stripUrl(rawUrl, &fragment);
+        if (url.find("://") != std::string::npos || url.empty()) return nullptr;
+        const std::string path = resolve(baseDir, url);
+        std::error_code ec;
+        if (!fs::exists(path, ec) || ++externDepth_ > options_.maxInlineDepth) return nullptr;
+        std::shared_ptr<LoadedFile> file = loadFile(path);
+        --externDepth_;
+        auto it = file->parsed.protos.find(fragment.empty() ? name : fragment);
+        return it == file->parsed.protos.end() ? nullptr : it->second;
+    }
+
+    const ImportOptions& options_;
+    ImportResult result_;
+    EvalContext ctx_;
+    std::vector<std::string> openFiles_;
+    std::unordered_map<std::string, std::shared_ptr<LoadedFile>> cache_;
+    int externDepth_ = 0;
+};
+
+}  // namespace
+
+ImportResult importVrmlText(std::string text, const std::string& fileName, const ImportOptions& options)
+{
+    return Importer(options).run(std::move(text), fileName);
+}
+
+ImportResult importVrmlFile(const std::string& path, const ImportOptions& options)
+{
+    std::string bytes, error;
+    if (!readFileBytes(path, bytes, error)) {
+        ImportResult r;
+        r.error = error;
+        return r;
+    }
+    return importVrmlText(std::move(bytes), path, options);
+}
+
+}  // namespace cadlod::vrml

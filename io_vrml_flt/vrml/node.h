@@ -1,0 +1,45 @@
+// Parsed VRML nodes, version-neutral: a type name, an optional DEF name, fields with
+// generically parsed values and (VRML 1.0) child nodes. USE yields the same shared
+// node, so a USE'd Coordinate is shared, never copied.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cadlod::vrml {
+
+struct Node;
+using NodePtr = std::shared_ptr<Node>;
+
+struct FieldValue {
+    enum class Kind { Empty, Floats, Ints, Strings, Words, Nodes, IsRef };
+    Kind kind = Kind::Empty;
+    std::shared_ptr<std::vector<float>> floats;
+    std::shared_ptr<std::vector<int32_t>> ints;
+    std::vector<std::string> strings;  // Strings, Words (enums, TRUE/FALSE, bit mask parts), IsRef name
+    std::vector<NodePtr> nodes;        // null entries for NULL
+};
+
+struct Field {
+    std::string name;
+    FieldValue value;
+};
+
+struct Node {
+    std::string type;
+    std::string defName;
+    std::vector<Field> fields;
+    std::vector<NodePtr> children;  // VRML 1.0 children
+    std::string where;              // file:line:col of the type name
+
+    const FieldValue* field(const char* name) const
+    {
+        for (const Field& f : fields)
+            if (f.name == name) return &f.value;
+        return nullptr;
+    }
+};
+
+}  // namespace cadlod::vrml

@@ -1,0 +1,463 @@
+#include "vrml/parser.h"
+
+#include "vrml/lexer.h"
+#include "vrml/proto.h"
+
+#include <unordered_map>
+
+namespace cadlod::vrml {
+namespace {
+
+bool isIndexField(std::string_view name)
+{
+    return name == "index" || (name.size() > 5 && name.substr(name.size() - 5) == "Index");
+}
+
+bool isInterfaceKeyword(std::string_view w)
+{
+    return w == "field" || w == "exposedField" || w == "eventIn" || w == "eventOut" ||
+           w == "inputOnly" || w == "outputOnly" || w == "initializeOnly" || w == "inputOutput";
+}
+
+bool declHasValue(std::string_view w)
+{
+    return w == "field" || w == "exposedField" || w == "initializeOnly" || w == "inputOutput";
+}
+
+class Parser {
+public:
+    Parser(std::string_view text, const std::string& fileName, Diagnostics& diag, const ParseOptions& options)
+        : lex_(text, fileName), diag_(diag), options_(options)
+    {
+        defScopes_.emplace_back();
+        protoScopes_.emplace_back();
+    }
+
+    ParsedFile run()
+    {
+        ParsedFile file;
+        parseStatements(file.roots, TokenKind::End);
+        file.protos = protoScopes_.front();
+        return file;
+    }
+
+private:
+    bool failed() const { return failed_; }
+
+    void fail(const Token& at, const std::string& message)
+    {
+        if (failed_) return;
+        failed_ = true;
+        diag_.warn("syntax error", lex_.location(at), message + "; the rest of the file is ignored");
+    }
+
+    bool expect(TokenKind kind, const char* what)
+    {
+        const Token t = lex_.next();
+        if (t.kind == kind) return true;
+        fail(t, std::string("expected ") + what + ", found " + describe(t));
+        return false;
+    }
+
+    static std::string describe(const Token& t)
+    {
+        switch (t.kind) {
+        case TokenKind::End: return "end of file (truncated?)";
+        case TokenKind::Bad: return "'" + std::string(t.text) + "'";
+        case TokenKind::String: return "a string";
+        default: return "'" + std::string(t.text) + "'";
+        }
+    }
+
+    std::string word(const char* what)
+    {
+        const Token t = lex_.next();
+        if (t.kind == TokenKind::Word) return std::string(t.text);
+        fail(t, std::string("expected ") + what + ", found " + describe(t));
+        return {};
+    }
+
+    void reportProgress()
+    {
+        if (!options_.progress) return;
+        const size_t done = lex_.offset();
+        if (done >= nextProgress_) {
+            options_.progress(done, lex_.size());
+            nextProgress_ = done + (size_t(1) << 20);
+        }
+    }
+
+    void parseStatements(std::vector<NodePtr>& out, TokenKind terminator)
+    {
+        while (!failed()) {
+            const Token& t = lex_.peek();
+            if (t.kind == terminator || t.kind == TokenKind::End) return;
+            if (t.kind != TokenKind::Word) {
+                fail(t, "expected a node, found " + describe(t));
+                return;
+            }
+            if (!parseStatementKeyword())
+                if (NodePtr n = parseNode()) out.push_back(std::move(n));
+        }
+    }
+
+    // PROTO, EXTERNPROTO, ROUTE and X3D header statements; false when the next word is none.
+    bool parseStatementKeyword()
+    {
+        if (!isStatementKeyword(lex_.peek().text)) return false;
+        parseStatementKeywordAfter(lex_.next());
+        return true;
+    }
+
+    static bool isStatementKeyword(std::string_view w)
+    {
+        return w == "PROTO" || w == "EXTERNPROTO" || w == "ROUTE" || w == "PROFILE" || w == "COMPONENT" ||
+               w == "META" || w == "IMPORT" || w == "EXPORT";
+    }
+
+    bool parseStatementKeywordAfter(const Token& t)
+    {
+        const std::string_view w = t.text;
+        if (w == "PROTO") {
+            parseProto();
+        } else if (w == "EXTERNPROTO") {
+            parseExternProto();
+        } else if (w == "ROUTE") {  // ROUTE a.b TO c.d: events are irrelevant to geometry
+            for (int i = 0; i < 3 && !failed(); ++i) word("ROUTE part");
+        } else if (w == "PROFILE" || w == "COMPONENT") {
+            word("X3D profile or component");
+        } else if (w == "META") {
+            lex_.next();
+            lex_.next();
+        } else if (w == "IMPORT" || w == "EXPORT") {
+            word("name");
+            if (lex_.peek().kind == TokenKind::Word && lex_.peek().text == "AS") {
+                lex_.next();
+                word("name");
+            }
+        } else {
+            return false;
+        }
+        return true;
+    }
+
+    NodePtr parseNode()
+    {
+        const Token t = lex_.next();
+        if (t.kind != TokenKind::Word) {
+            fail(t, "expected a node, found " + describe(t));
+            return nullptr;
+        }
+        return parseNodeAfter(t);
+    }
+
+    NodePtr parseNodeAfter(const Token& t)
+    {
+        if (t.text == "NULL") return nullptr;
+        if (t.text == "USE") {
+            const Token nameTok = lex_.peek();
+            const std::string name = word("a DEF name after USE");
+            if (failed()) return nullptr;
+            if (NodePtr n = lookupDef(name)) return n;
+            diag_.warn("undefined USE", lex_.location(nameTok), "USE " + name + " has no DEF before it");
+            return nullptr;
+        }
+        if (t.text == "DEF") {
+            const std::string name = word("a name after DEF");
+            if (failed()) return nullptr;
+            NodePtr n = parseNode();
+            if (n) {
+                n->defName = name;
+                defScopes_.back()[name] = n;  // the most recent DEF wins
+            }
+            return n;
+        }
+        return parseNodeBody(t);
+    }
+
+    NodePtr parseNodeBody(const Token& typeTok)
+    {
+        if (++depth_ > options_.maxDepth) {
+            fail(typeTok, "nesting deeper than " + std::to_string(options_.maxDepth) + " levels");
+            --depth_;
+            return nullptr;
+        }
+        reportProgress();
+        auto node = std::make_shared<Node>();
+        node->type = std::string(typeTok.text);
+        node->where = lex_.location(typeTok);
+        if (expect(TokenKind::LBrace, ("'{' after " + node->type).c_str())) parseFields(*node);
+        --depth_;
+        if (std::shared_ptr<ProtoDecl> proto = lookupProto(node->type)) return instantiate(*proto, *node);
+        return node;
+    }
+
+    void parseFields(Node& node)
+    {
+        while (!failed()) {
+            const Token t = lex_.next();
+            if (t.kind == TokenKind::RBrace) return;
+            if (t.kind != TokenKind::Word) {
+                fail(t, "expected a field name or '}' in " + node.type + ", found " + describe(t));
+                return;
+            }
+            if (t.text == "DEF" || t.text == "USE") {
+                if (NodePtr child = parseNodeAfter(t)) node.children.push_back(std::move(child));
+                continue;
+            }
+            if ((t.text == "ROUTE" || t.text == "PROTO" || t.text == "EXTERNPROTO") && parseStatementKeywordAfter(t))
+                continue;
+            if (isInterfaceKeyword(t.text)) {
+                parseInterfaceDecl(t.text, node.fields);
+                continue;
+            }
+            if (lex_.peek().kind == TokenKind::LBrace) {  // VRML 1.0 child node
+                if (NodePtr child = parseNodeBody(t)) node.children.push_back(std::move(child));
+                continue;
+            }
+            Field f;
+            f.name = std::string(t.text);
+            f.value = parseValue(f.name);
+            node.fields.push_back(std::move(f));
+        }
+    }
+
+    void parseInterfaceDecl(std::string_view keyword, std::vector<Field>& out)
+    {
+        word("a field type");
+        Field f;
+        f.name = word("a field name");
+        if (failed()) return;
+        const Token& next = lex_.peek();
+        if (next.kind == TokenKind::Word && next.text == "IS") {
+            f.value = parseValue(f.name);
+        } else if (declHasValue(keyword) && next.kind != TokenKind::RBrace && next.kind != TokenKind::RBracket &&
+                   !(next.kind == TokenKind::Word && isInterfaceKeyword(next.text))) {
+            f.value = parseValue(f.name);
+        }
+        out.push_back(std::move(f));
+    }
+
+    FieldValue parseValue(const std::string& name)
+    {
+        FieldValue v;
+        const Token& t = lex_.peek();
+        switch (t.kind) {
+        case TokenKind::Number:
+            readNumbers(name, v);
+            break;
+        case TokenKind::String:
+            v.kind = FieldValue::Kind::Strings;
+            v.strings.push_back(Lexer::unescape(lex_.next().text));
+            break;
+        case TokenKind::LBracket:
+            lex_.next();
+            parseList(name, v);
+            break;
+        case TokenKind::LParen:
+            lex_.next();
+            parseBitMask(v);
+            break;
+        case TokenKind::Word:
+            parseWordValue(v);
+            break;
+        case TokenKind::RBrace:
+            break;  // a declaration without value
+        default:
+            fail(t, "expected a value for field " + name + ", found " + describe(t));
+        }
+        return v;
+    }
+
+    void readNumbers(const std::string& name, FieldValue& v)
+    {
+        if (isIndexField(name)) {
+            if (!v.ints) v.ints = std::make_shared<std::vector<int32_t>>();
+            v.kind = FieldValue::Kind::Ints;
+            lex_.readInts(*v.ints);
+        } else {
+            if (!v.floats) v.floats = std::make_shared<std::vector<float>>();
+            v.kind = FieldValue::Kind::Floats;
+            lex_.readFloats(*v.floats);
+        }
+        if (lex_.peek().kind == TokenKind::Number) fail(lex_.peek(), "bad number");
+    }
+
+    void parseList(const std::string& name, FieldValue& v)
+    {
+        while (!failed()) {
+            const Token& t = lex_.peek();
+            switch (t.kind) {
+            case TokenKind::RBracket:
+                lex_.next();
+                return;
+            case TokenKind::Number:
+                readNumbers(name, v);
+                break;
+            case TokenKind::String:
+                v.kind = FieldValue::Kind::Strings;
+                v.strings.push_back(Lexer::unescape(lex_.next().text));
+                break;
+            case TokenKind::Word: {
+                const Token w = lex_.next();
+                if (w.text == "DEF" || w.text == "USE" || w.text == "NULL" || lex_.peek().kind == TokenKind::LBrace) {
+                    v.kind = FieldValue::Kind::Nodes;
+                    if (NodePtr n = parseNodeAfter(w)) v.nodes.push_back(std::move(n));
+                } else if (w.text != "ROUTE" || !parseStatementKeywordAfter(w)) {
+                    v.kind = FieldValue::Kind::Words;
+                    v.strings.emplace_back(w.text);
+                }
+                break;
+            }
+            default:
+                fail(t, "unexpected " + describe(t) + " in the value of " + name);
+                return;
+            }
+        }
+    }
+
+    void parseBitMask(FieldValue& v)
+    {
+        v.kind = FieldValue::Kind::Words;
+        while (!failed()) {
+            const Token t = lex_.next();
+            if (t.kind == TokenKind::RParen) return;
+            if (t.kind == TokenKind::Word) v.strings.emplace_back(t.text);
+            else if (t.kind != TokenKind::Bar) fail(t, "unexpected " + describe(t) + " in a bit mask");
+        }
+    }
+
+    void parseWordValue(FieldValue& v)
+    {
+        const Token w = lex_.next();
+        if (w.text == "IS") {
+            v.kind = FieldValue::Kind::IsRef;
+            v.strings.push_back(word("a proto field name after IS"));
+            return;
+        }
+        if (w.text == "DEF" || w.text == "USE" || w.text == "NULL" || lex_.peek().kind == TokenKind::LBrace) {
+            v.kind = FieldValue::Kind::Nodes;
+            if (NodePtr n = parseNodeAfter(w)) v.nodes.push_back(std::move(n));
+            return;
+        }
+        v.kind = FieldValue::Kind::Words;
+        v.strings.emplace_back(w.text);
+        while (lex_.peek().kind == TokenKind::Bar) {  // VRML 1.0 mask without parentheses
+            lex_.next();
+            v.strings.push_back(word("a bit mask value"));
+        }
+    }
+
+    void parseProtoInterface(ProtoDecl& decl)
+    {
+        if (!expect(TokenKind::LBracket, "'[' after the PROTO name")) return;
+        while (!failed()) {
+            const Token t = lex_.next();
+            if (t.kind == TokenKind::RBracket) return;
+            if (t.kind != TokenKind::Word || !isInterfaceKeyword(t.text)) {
+                fail(t, "expected a field declaration in " + decl.name + ", found " + describe(t));
+                return;
+            }
+            parseInterfaceDecl(t.text, decl.interface);
+        }
+    }
+
+    void parseProto()
+    {
+        auto decl = std::make_shared<ProtoDecl>();
+        decl->name = word("a PROTO name");
+        parseProtoInterface(*decl);
+        if (!expect(TokenKind::LBrace, "'{' opening the PROTO body")) return;
+        defScopes_.emplace_back();
+        protoScopes_.emplace_back();
+        parseStatements(decl->body, TokenKind::RBrace);
+        defScopes_.pop_back();
+        protoScopes_.pop_back();
+        if (expect(TokenKind::RBrace, "'}' closing the PROTO body")) protoScopes_.back()[decl->name] = decl;
+    }
+
+    void parseExternProto()
+    {
+        auto decl = std::make_shared<ProtoDecl>();
+        decl->external = true;
+        decl->name = word("an EXTERNPROTO name");
+        parseProtoInterface(*decl);
+        FieldValue urls = parseValue("url");
+        decl->urls = urls.strings;
+        if (!failed()) protoScopes_.back()[decl->name] = decl;
+    }
+
+    NodePtr instantiate(ProtoDecl& proto, const Node& instance)
+    {
+        ProtoDecl* body = &proto;
+        if (proto.external) {
+            if (!proto.resolveAttempted) {
+                proto.resolveAttempted = true;
+                for (const std::string& url : proto.urls) {
+                    if (options_.externProto) proto.resolved = options_.externProto(url, proto.name);
+                    if (proto.resolved) break;
+                }
+                if (!proto.resolved)
+                    diag_.warn("missing EXTERNPROTO", instance.where,
+                               "cannot load EXTERNPROTO " + proto.name + "; its instances are skipped");
+            }
+            if (!proto.resolved) return nullptr;
+            body = proto.resolved.get();
+        }
+        NodePtr n = instantiateProto(*body, instance);
+        if (n) n->where = instance.where;
+        return n;
+    }
+
+    NodePtr lookupDef(const std::string& name) const
+    {
+        const auto& scope = defScopes_.back();
+        auto it = scope.find(name);
+        return it == scope.end() ? nullptr : it->second;
+    }
+
+    std::shared_ptr<ProtoDecl> lookupProto(const std::string& name) const
+    {
+        for (auto s = protoScopes_.rbegin(); s != protoScopes_.rend(); ++s) {
+            auto it = s->find(name);
+            if (it != s->end()) return it->second;
+        }
+        return nullptr;
+    }
+
+    Lexer lex_;
+    Diagnostics& diag_;
+    const ParseOptions& options_;
+    std::vector<std::unordered_map<std::string, NodePtr>> defScopes_;
+    std::vector<ProtoTable> protoScopes_;
+    bool failed_ = false;
+    int depth_ = 0;
+    size_t nextProgress_ = 0;
+};
+
+}  // namespace
+
+VrmlVersion detectVersion(std::string_view text)
+{
+    if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+    if (text.substr(0, 10) == "#VRML V2.0") return VrmlVersion::V2;
+    if (text.substr(0, 10) == "#VRML V1.0") return VrmlVersion::V1;
+    if (text.substr(0, 4) == "#X3D") return VrmlVersion::V2;
+    return VrmlVersion::Unknown;
+}
+
+ParsedFile parseVrml(std::string_view text, const std::string& fileName, Diagnostics& diag,
+                     const ParseOptions& options)
+{
+    const VrmlVersion version = detectVersion(text);
+    if (version == VrmlVersion::Unknown) {
+        ParsedFile file;
+        file.error = fileName + ":1:1: not a VRML file (expected a '#VRML V2.0 utf8' or '#VRML V1.0 ascii' header)";
+        return file;
+    }
+    ParsedFile file = Parser(text, fileName, diag, options).run();
+    file.version = version;
+    return file;
+}
+
+}  // namespace cadlod::vrml
