@@ -14,6 +14,7 @@
 #include <QElapsedTimer>
 
 #include <algorithm>
+#include <cstdio>
 
 namespace cadlod {
 namespace {
@@ -68,16 +69,24 @@ int mergeVertices(CMeshO& m, float tolerance)
     return merged;
 }
 
+// meshlabserver's -i path never gives an IO plugin a log (MeshLabInterface::Log is then
+// a no-op), so every report also goes to stderr.
+void report(MeshIOInterface& plugin, GLLogStream::Levels level, const std::string& text)
+{
+    plugin.Log(level, text);
+    std::fprintf(stderr, "io_vrml_flt: %s\n", text.c_str());
+}
+
 void logDiagnostics(MeshIOInterface& plugin, const vrml::Diagnostics& diag)
 {
     if (diag.total() == 0) return;
     std::string summary = "VRML import warnings:";
     for (const auto& [kind, count] : diag.counts()) summary += " " + kind + " " + std::to_string(count) + ";";
-    plugin.Log(GLLogStream::WARNING, summary);
+    report(plugin, GLLogStream::WARNING, summary);
     constexpr size_t kShown = 12;  // the first few in full; counts above say how many more
     for (size_t i = 0; i < diag.kept().size() && i < kShown; ++i) {
         const vrml::Diagnostic& d = diag.kept()[i];
-        plugin.Log(GLLogStream::WARNING, d.where + ": " + d.kind + ": " + d.message);
+        report(plugin, GLLogStream::WARNING, d.where + ": " + d.kind + ": " + d.message);
     }
 }
 
@@ -111,7 +120,7 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     vrml::ImportResult result = vrml::importVrmlFile(fileName.toStdString(), options);
     if (!result.ok()) {
         error = QString::fromStdString(result.error);
-        plugin.Log(GLLogStream::WARNING, result.error);
+        report(plugin, GLLogStream::WARNING, result.error);
         return false;
     }
     const vrml::Scene& scene = result.scene;
@@ -127,12 +136,16 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     vcg::tri::UpdateBounding<CMeshO>::Box(m.cm);
 
     const double seconds = std::max(1e-6, timer.elapsed() / 1000.0);
-    plugin.Log("VRML %d import of %s: %zu parts, %d triangles, %d vertices (%d merged), %zu shapes, "
-               "%zu faces skipped, %zu line/point sets ignored, %zu inlines; %.1f MB in %.2f s (read %.2f s), %.1f MB/s",
-               scene.version == 1 ? 1 : 2, qUtf8Printable(fileName), partTableHandle(m.cm)().size(), m.cm.fn,
-               m.cm.vn, merged, scene.stats.shapes, scene.stats.skippedFaces,
-               scene.stats.lineSets + scene.stats.pointSets, scene.stats.inlinesLoaded,
-               scene.stats.bytesRead / 1e6, seconds, parsedMs / 1000.0, scene.stats.bytesRead / 1e6 / seconds);
+    char line[1024];
+    std::snprintf(line, sizeof line,
+                  "VRML %d import of %s: %zu parts, %d triangles, %d vertices (%d merged), %zu shapes, "
+                  "%zu faces skipped, %zu line/point sets ignored, %zu inlines; %.1f MB in %.2f s (read %.2f s), "
+                  "%.1f MB/s",
+                  scene.version == 1 ? 1 : 2, qUtf8Printable(fileName), partTableHandle(m.cm)().size(), m.cm.fn,
+                  m.cm.vn, merged, scene.stats.shapes, scene.stats.skippedFaces,
+                  scene.stats.lineSets + scene.stats.pointSets, scene.stats.inlinesLoaded, scene.stats.bytesRead / 1e6,
+                  seconds, parsedMs / 1000.0, scene.stats.bytesRead / 1e6 / seconds);
+    report(plugin, GLLogStream::FILTER, line);
     logDiagnostics(plugin, scene.diagnostics);
     if (cb) cb(100, "VRML import done");
     return true;
