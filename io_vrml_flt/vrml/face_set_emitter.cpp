@@ -140,7 +140,7 @@ private:
         size_t start = 0;
         while (start < idx.size()) {
             size_t end = start;
-            while (end < idx.size() && idx[end] >= 0) ++end;
+            while (end < idx.size() && idx[end] != -1) ++end;  // other negatives: bad index
             Face f{uint32_t(corners_.size()), 0, faceNumber};
             bool bad = false;
             for (size_t k = start; k < end; ++k) {
