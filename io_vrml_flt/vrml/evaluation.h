@@ -43,6 +43,9 @@ void evaluateVrml97(const std::vector<NodePtr>& roots, const Mat4& world, const 
 void evaluateVrml10(const std::vector<NodePtr>& roots, const Mat4& world, const Owner& owner, const std::string& path,
                     EvalContext& ctx);
 
+// Adds the triangles a shape node added to `part` to the scene's per-source counts.
+void countShapeTriangles(const std::string& geometryType, size_t before, const Part& part, SceneStats& stats);
+
 // Emits an owned face set (primitives) with the given material color.
 void emitOwnedFaceSet(const struct OwnedFaceSet& f, const std::string& where, const Mat4& world, Part& part,
                       EvalContext& ctx);

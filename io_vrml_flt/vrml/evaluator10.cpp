@@ -192,6 +192,15 @@ private:
         ++ctx_.scene.stats.shapes;
         const std::vector<float> materials = materialsRgba(s);
         Part& part = ctx_.part(owner.id < 0 ? ctx_.newOwner(path) : owner, firstMaterial(materials));
+        const size_t before = part.triangleCount();
+        emitShape(n, s, materials, part);
+        countShapeTriangles(t, before, part, ctx_.scene.stats);
+        return true;
+    }
+
+    void emitShape(const Node& n, const State& s, const std::vector<float>& materials, Part& part)
+    {
+        const std::string& t = n.type;
         if (t == "IndexedFaceSet") indexedFaceSet(n, s, materials, part);
         else if (t == "Cube")
             emitOwnedFaceSet(makeBox({floatField(n, "width", 2), floatField(n, "height", 2), floatField(n, "depth", 2)}),
@@ -205,7 +214,6 @@ private:
             emitOwnedFaceSet(makeCone(floatField(n, "bottomRadius", 1), floatField(n, "height", 2), hasPart(n, "SIDES"),
                                       hasPart(n, "BOTTOM")),
                              n.where, s.world, part, ctx_);
-        return true;
     }
 
     static bool hasPart(const Node& n, const char* which)

@@ -145,14 +145,22 @@ private:
             return;
         }
         Part& part = ctx_.part(owner, materialColor(node));
-        if (type == "IndexedFaceSet") indexedFaceSet(*geometry, world, part);
-        else if (type == "Box") emitOwnedFaceSet(makeBox(vec3Field(*geometry, "size", {2, 2, 2})), geometry->where, world, part, ctx_);
-        else if (type == "Sphere") emitOwnedFaceSet(makeSphere(floatField(*geometry, "radius", 1)), geometry->where, world, part, ctx_);
-        else if (type == "Cylinder") cylinder(*geometry, world, part);
-        else if (type == "Cone") cone(*geometry, world, part);
-        else if (type == "ElevationGrid") elevationGrid(*geometry, world, part);
-        else if (type == "Extrusion") extrusion(*geometry, world, part);
-        else ctx_.scene.diagnostics.warn("unsupported geometry", geometry->where, "geometry " + type + " ignored");
+        const size_t before = part.triangleCount();
+        emitGeometry(*geometry, world, part);
+        countShapeTriangles(type, before, part, ctx_.scene.stats);
+    }
+
+    void emitGeometry(const Node& g, const Mat4& world, Part& part)
+    {
+        const std::string& type = g.type;
+        if (type == "IndexedFaceSet") indexedFaceSet(g, world, part);
+        else if (type == "Box") emitOwnedFaceSet(makeBox(vec3Field(g, "size", {2, 2, 2})), g.where, world, part, ctx_);
+        else if (type == "Sphere") emitOwnedFaceSet(makeSphere(floatField(g, "radius", 1)), g.where, world, part, ctx_);
+        else if (type == "Cylinder") cylinder(g, world, part);
+        else if (type == "Cone") cone(g, world, part);
+        else if (type == "ElevationGrid") elevationGrid(g, world, part);
+        else if (type == "Extrusion") extrusion(g, world, part);
+        else ctx_.scene.diagnostics.warn("unsupported geometry", g.where, "geometry " + type + " ignored");
     }
 
     void cylinder(const Node& g, const Mat4& world, Part& part)
@@ -243,6 +251,13 @@ private:
 };
 
 }  // namespace
+
+void countShapeTriangles(const std::string& type, size_t before, const Part& part, SceneStats& stats)
+{
+    const size_t added = part.triangleCount() - before;
+    if (type == "Sphere" || type == "Cylinder" || type == "Cone") stats.roundPrimitiveTriangles += added;
+    else stats.meshTriangles += added;
+}
 
 void emitOwnedFaceSet(const OwnedFaceSet& f, const std::string& where, const Mat4& world, Part& part,
                       EvalContext& ctx)

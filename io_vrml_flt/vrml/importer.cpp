@@ -81,10 +81,19 @@ public:
         openFiles_.push_back(canonical(fileName));
         evaluate(parsed, fileName, Mat4::scale({options_.unitScale, options_.unitScale, options_.unitScale}), Owner{},
                  fs::path(fileName).filename().string());
+        dropEmptyParts();
         return std::move(result_);
     }
 
 private:
+    // Shapes whose geometry was unsupported or all bad leave empty parts behind.
+    void dropEmptyParts()
+    {
+        auto& parts = result_.scene.parts;
+        parts.erase(std::remove_if(parts.begin(), parts.end(), [](const Part& p) { return p.triangles.empty(); }),
+                    parts.end());
+    }
+
     static std::string canonical(const std::string& path)
     {
         std::error_code ec;

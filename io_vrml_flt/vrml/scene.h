@@ -35,6 +35,10 @@ struct SceneStats {
     size_t lineSets = 0;           // IndexedLineSet / PointSet: counted, not imported
     size_t pointSets = 0;
     size_t inlinesLoaded = 0;
+    // Triangles by source, for comparing with other readers: IndexedFaceSet, ElevationGrid,
+    // Extrusion and Box/Cube tessellate the same everywhere; Sphere/Cylinder/Cone do not.
+    size_t meshTriangles = 0;
+    size_t roundPrimitiveTriangles = 0;
     size_t bytesRead = 0;          // source bytes (inflated), main file and inlines
 };
 

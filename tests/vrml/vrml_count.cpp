@@ -16,9 +16,9 @@ int main(int argc, char** argv)
             ++failures;
             continue;
         }
-        std::printf("%s\ttriangles %zu\tparts %zu\tvertices %zu\tskipped %zu\twarnings %d\n", argv[i],
-                    r.scene.triangleCount(), r.scene.parts.size(), r.scene.vertexCount(), r.scene.stats.skippedFaces,
-                    r.scene.diagnostics.total());
+        std::printf("%s\tmesh %zu\tround %zu\tparts %zu\tvertices %zu\tskipped %zu\twarnings %d\n", argv[i],
+                    r.scene.stats.meshTriangles, r.scene.stats.roundPrimitiveTriangles, r.scene.parts.size(),
+                    r.scene.vertexCount(), r.scene.stats.skippedFaces, r.scene.diagnostics.total());
         if (std::getenv("VRML_COUNT_VERBOSE"))
             for (const auto& d : r.scene.diagnostics.kept())
                 std::printf("  %s: %s: %s\n", d.where.c_str(), d.kind.c_str(), d.message.c_str());
