@@ -1,0 +1,136 @@
+// Building a LOD set (design.md §5) on any vcglib mesh type: each level is a copy of the
+// previous level (or of the original) simplified with the CAD Quadric Edge Collapse to its
+// planned face count, measured against the original (symmetric Hausdorff, compactness),
+// and given switch distances from its error. The caller owns the level meshes: the
+// MeshLab filter makes them layers, the tests keep them in a container.
+#pragma once
+
+#include "compactness.h"
+#include "hausdorff.h"
+#include "layer_metadata.h"
+#include "lod_set.h"
+#include "simplify.h"
+
+#include <vcg/complex/append.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cadlod {
+
+struct LodSetOptions {
+    std::string levels = "50 60 70 80 90";
+    LevelSpec spec = LevelSpec::ReductionPercent;
+    bool fromOriginal = false;          // false: level k is made from level k-1 (faster)
+    ViewParams view;
+    std::size_t hausdorffSamples = 0;   // face samples per side; 0: as many as level-0 faces
+    SimplifyParams simplify;            // stop criteria are set per level
+    int setId = 1;
+};
+
+struct LodSetResult {
+    std::string error;                       // non-empty: nothing usable was built
+    std::vector<LodLevel> levels;            // level 0 (the original) first
+    std::vector<CompactnessStats> compactness;
+    std::vector<SimplifyStats> steps;        // one per simplified level (level 1..n)
+    std::vector<SymmetricHausdorff> distance;
+    double modelSize = 0.0;                  // bbox diagonal of the original
+    bool ok() const { return error.empty(); }
+};
+
+namespace detail {
+
+// Copies `from` into `to`, keeping cadlod's part attributes.
+template <class MeshType>
+void copyWithParts(MeshType& to, MeshType& from)
+{
+    to.Clear();
+    if (hasParts(from)) {
+        facePartHandle(to);
+        partTableHandle(to)() = partTableHandle(from)();
+    }
+    vcg::tri::Append<MeshType, MeshType>::MeshCopy(to, from, false, false);
+}
+
+template <class MeshType>
+vcg::Box3d liveVertexBox(const MeshType& m)
+{
+    vcg::Box3d box;
+    for (const auto& v : m.vert)
+        if (!v.IsD())
+            box.Add(vcg::Point3d::Construct(v.cP()));
+    return box;
+}
+
+}  // namespace detail
+
+// `newLevel(k)` returns an empty mesh for level k (k >= 1) that stays valid until the
+// call returns; the mesh must carry what cadlod::simplify needs (VF adjacency, marks).
+// On success every level mesh, and `original`, carries its LodLevel attribute.
+template <class MeshType>
+LodSetResult buildLodSet(MeshType& original, const LodSetOptions& options,
+                         const std::function<MeshType&(int)>& newLevel, vcg::CallBackPos* progress = nullptr)
+{
+    LodSetResult result;
+    const LevelPlan plan = planLevels(options.levels, options.spec, original.fn);
+    if (!plan.ok()) {
+        result.error = "level list: " + plan.error;
+        return result;
+    }
+    const std::size_t samples = options.hausdorffSamples ? options.hausdorffSamples : std::size_t(original.fn);
+    std::vector<MeshType*> meshes{&original};
+
+    LodLevel level0;
+    level0.setId = options.setId;
+    level0.faces = original.fn;
+    const vcg::Box3d box = detail::liveVertexBox(original);
+    if (!box.IsNull())
+        level0.center = {box.Center()[0], box.Center()[1], box.Center()[2]};
+    result.modelSize = box.IsNull() ? 0.0 : box.Diag();
+    result.levels.push_back(level0);
+    result.compactness.push_back(meshCompactness(original));
+
+    const int count = int(plan.targetFaces.size());
+    for (int k = 1; k <= count; ++k) {
+        MeshType& base = options.fromOriginal ? original : *meshes.back();
+        MeshType& mesh = newLevel(k);
+        detail::copyWithParts(mesh, base);
+        vcg::tri::Allocator<MeshType>::CompactEveryVector(mesh);
+
+        SimplifyParams params = options.simplify;
+        params.targetFaces = plan.targetFaces[k - 1];
+        params.reductionPerc = 0.0;
+        params.maxError = 0.0;
+        if (progress)
+            progress(100 * (k - 1) / count, ("Simplifying level " + std::to_string(k)).c_str());
+        SimplifyStats stats = simplify(mesh, params, nullptr);
+        vcg::tri::Allocator<MeshType>::CompactEveryVector(mesh);
+        if (!stats.ok) {
+            result.error = "level " + std::to_string(k) + ": " + stats.message;
+            return result;
+        }
+        result.steps.push_back(stats);
+
+        if (progress)
+            progress(100 * (k - 1) / count + 50 / count, ("Measuring level " + std::to_string(k)).c_str());
+        const SymmetricHausdorff distance = symmetricHausdorff(original, mesh, samples);
+        LodLevel level = level0;
+        level.level = k;
+        level.faces = mesh.fn;
+        level.reduction = original.fn ? 1.0 - double(mesh.fn) / original.fn : 0.0;
+        level.hausdorffMax = distance.max();
+        level.hausdorffMean = distance.mean();
+        result.levels.push_back(level);
+        result.distance.push_back(distance);
+        result.compactness.push_back(meshCompactness(mesh));
+        meshes.push_back(&mesh);
+    }
+
+    assignSwitchDistances(result.levels, result.modelSize, options.view);
+    for (std::size_t k = 0; k < meshes.size(); ++k)
+        lodLevelHandle(*meshes[k])() = result.levels[k];
+    return result;
+}
+
+}  // namespace cadlod

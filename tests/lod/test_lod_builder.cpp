@@ -1,0 +1,144 @@
+// buildLodSet on a plain vcglib mesh: level counts, error and switch-distance monotony,
+// the per-mesh LodLevel attribute, part attributes carried into every level.
+#include "core/lod_builder.h"
+#include "test_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <vcg/complex/algorithms/create/platonic.h>
+
+#include <deque>
+
+using namespace cadlod;
+using cadlod::test::TestMesh;
+
+namespace {
+
+void makeSphereWithTwoParts(TestMesh& m)
+{
+    vcg::tri::Sphere(m, 4);  // 5120 faces
+    auto part = facePartHandle(m);
+    for (auto& f : m.face)
+        part[f] = vcg::Barycenter(f)[2] > 0 ? 1 : 0;
+    partTableHandle(m)() = {PartInfo{"LOWER", {1, 0, 0, 1}}, PartInfo{"UPPER", {0, 0, 1, 1}}};
+}
+
+struct Built {
+    TestMesh original;
+    std::deque<TestMesh> levels;
+    LodSetResult result;
+};
+
+void build(Built& b, const LodSetOptions& options)
+{
+    makeSphereWithTwoParts(b.original);
+    vcg::tri::UpdateTopology<TestMesh>::VertexFace(b.original);
+    b.result = buildLodSet<TestMesh>(b.original, options, [&b](int) -> TestMesh& {
+        b.levels.emplace_back();
+        return b.levels.back();
+    });
+}
+
+}  // namespace
+
+TEST(LodBuilder, PaperLevelsAreCoarserAndFurther)
+{
+    Built b;
+    LodSetOptions options;  // 50 60 70 80 90, each from the previous level
+    build(b, options);
+    ASSERT_TRUE(b.result.ok()) << b.result.error;
+    const auto& levels = b.result.levels;
+    ASSERT_EQ(levels.size(), 6u);
+    ASSERT_EQ(b.levels.size(), 5u);
+    EXPECT_EQ(levels[0].faces, 5120);
+    const int expected[] = {5120, 2560, 2048, 1536, 1024, 512};
+    for (int k = 1; k < 6; ++k) {
+        EXPECT_NEAR(levels[k].faces, expected[k], 2) << "level " << k;
+        EXPECT_EQ(b.levels[k - 1].fn, levels[k].faces);
+        EXPECT_LT(levels[k].faces, levels[k - 1].faces);
+        EXPECT_GT(levels[k].hausdorffMax, 0.0);
+        EXPECT_GE(levels[k].hausdorffMax, levels[k - 1].hausdorffMax) << "level " << k;
+        EXPECT_NEAR(levels[k].reduction, 1.0 - double(levels[k].faces) / 5120, 1e-12);
+    }
+    // Errors stay small against the unit sphere (diagonal ~3.46).
+    EXPECT_LT(levels[5].hausdorffMax, 0.1);
+    for (int k = 0; k < 6; ++k) {
+        EXPECT_LE(levels[k].switchOut, levels[k].switchIn);
+        if (k + 1 < 6)
+            EXPECT_EQ(levels[k].switchIn, levels[k + 1].switchOut);
+        EXPECT_EQ(levels[k].setId, 1);
+        EXPECT_EQ(levels[k].level, k);
+    }
+    EXPECT_EQ(levels[0].switchOut, 0.0);
+    EXPECT_GT(levels[5].switchIn, levels[5].switchOut);
+}
+
+TEST(LodBuilder, EveryMeshCarriesItsLevelAndParts)
+{
+    Built b;
+    LodSetOptions options;
+    options.levels = "50 90";
+    options.setId = 7;
+    build(b, options);
+    ASSERT_TRUE(b.result.ok()) << b.result.error;
+    ASSERT_TRUE(hasLodLevel(b.original));
+    EXPECT_EQ(lodLevelHandle(b.original)().level, 0);
+    EXPECT_EQ(lodLevelHandle(b.original)().setId, 7);
+    for (int k = 0; k < 2; ++k) {
+        TestMesh& m = b.levels[k];
+        ASSERT_TRUE(hasLodLevel(m));
+        EXPECT_EQ(lodLevelHandle(m)().level, k + 1);
+        EXPECT_EQ(lodLevelHandle(m)().setId, 7);
+        EXPECT_EQ(lodLevelHandle(m)().faces, m.fn);
+        ASSERT_TRUE(hasParts(m));
+        EXPECT_EQ(partTableHandle(m)().size(), 2u);
+        EXPECT_EQ(partTableHandle(m)()[1].name, "UPPER");
+        // Part borders are kept: faces of part 1 stay above the equator.
+        auto part = facePartHandle(m);
+        int upper = 0;
+        for (auto& f : m.face) {
+            if (f.IsD())
+                continue;
+            upper += part[f] == 1;
+            if (part[f] == 1)
+                EXPECT_GT(vcg::Barycenter(f)[2], -0.05f);
+        }
+        EXPECT_GT(upper, m.fn / 4);
+    }
+}
+
+TEST(LodBuilder, FromOriginalGivesSameFaceCounts)
+{
+    Built b;
+    LodSetOptions options;
+    options.levels = "50 80";
+    options.fromOriginal = true;
+    build(b, options);
+    ASSERT_TRUE(b.result.ok()) << b.result.error;
+    EXPECT_NEAR(b.result.levels[1].faces, 2560, 2);
+    EXPECT_NEAR(b.result.levels[2].faces, 1024, 2);
+}
+
+TEST(LodBuilder, FaceCountLevels)
+{
+    Built b;
+    LodSetOptions options;
+    options.levels = "3000 1000 300";
+    options.spec = LevelSpec::FaceCount;
+    build(b, options);
+    ASSERT_TRUE(b.result.ok()) << b.result.error;
+    EXPECT_NEAR(b.result.levels[1].faces, 3000, 2);
+    EXPECT_NEAR(b.result.levels[3].faces, 300, 2);
+}
+
+TEST(LodBuilder, BadLevelListIsAClearErrorAndBuildsNothing)
+{
+    Built b;
+    LodSetOptions options;
+    options.levels = "50 40";
+    build(b, options);
+    EXPECT_FALSE(b.result.ok());
+    EXPECT_NE(b.result.error.find("not coarser"), std::string::npos) << b.result.error;
+    EXPECT_TRUE(b.levels.empty());
+    EXPECT_FALSE(hasLodLevel(b.original));
+}
