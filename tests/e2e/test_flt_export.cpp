@@ -87,3 +87,40 @@ TEST(FltExport, FaceColorsBecomePartColors)
     EXPECT_EQ(red, m.face.size() / 2);
     EXPECT_EQ(blue, m.face.size() - m.face.size() / 2);
 }
+
+// CAD parts from the VRML importer become one named Object each (long names in Long ID
+// records) with their material colors: meshlabserver -i part.wrl -o part.flt.
+TEST(FltExport, VrmlPartsBecomeNamedObjects)
+{
+    const std::string dir = scratchDir("flt_export_parts");
+    writeText(dir + "/assembly.wrl", R"(#VRML V2.0 utf8
+DEF LEFT_BRACKET_ASSEMBLY Transform { children [
+  Shape { appearance Appearance { material Material { diffuseColor 1 0 0 } }
+          geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }
+                                    coordIndex [ 0 1 2 3 -1 ] } } ] }
+DEF Pin Transform { translation 5 0 0 children [
+  Shape { appearance Appearance { material Material { diffuseColor 0 0 1 } }
+          geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 2 0 0, 2 2 0, 0 2 0, 0 0 2 ] }
+                                    coordIndex [ 0 1 2 3 -1, 0 1 4 -1 ] } } ] }
+)");
+    const std::string flt = dir + "/assembly.flt";
+    const ServerRun run = runMeshlabServer({"-i", dir + "/assembly.wrl", "-o", flt});
+    ASSERT_TRUE(run.ok()) << run.output;
+    // Without "preserveObject" OpenSceneGraph folds Object nodes directly under a Group
+    // into their parent, names and all.
+    const OsgProbe probe = probeWithOsg(flt, "preserveObject");
+    ASSERT_TRUE(probe.loaded);
+    ASSERT_EQ(probe.outsideLods.size(), 5u);
+    auto named = [&](const std::string& n) {
+        return std::find(probe.names.begin(), probe.names.end(), n) != probe.names.end();
+    };
+    EXPECT_TRUE(named("LEFT_BRACKET_ASSEMBLY")) << "long part name kept through a Long ID record";
+    EXPECT_TRUE(named("Pin"));
+    std::size_t red = 0, blue = 0;
+    for (const OsgTriangle& t : probe.outsideLods) {
+        red += t.color[0] > 0.99f && t.color[2] < 0.01f && t.position[0][0] < 2.0f;
+        blue += t.color[2] > 0.99f && t.color[0] < 0.01f && t.position[0][0] >= 5.0f;
+    }
+    EXPECT_EQ(red, 2u);
+    EXPECT_EQ(blue, 3u);
+}
