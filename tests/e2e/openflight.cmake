@@ -1,4 +1,4 @@
 # End-to-end OpenFlight export/import through the staged meshlabserver, each file
 # checked with OpenSceneGraph (included by tests/e2e/CMakeLists.txt).
-cadlod_add_e2e_test(e2e_openflight SOURCES test_flt_export.cpp test_flt_import.cpp
+cadlod_add_e2e_test(e2e_openflight SOURCES test_flt_export.cpp test_flt_import.cpp test_flt_lod_set.cpp
   LIBS cadlod_openflight cadlod_osg_probe)

@@ -1,0 +1,63 @@
+// meshlabserver -i part.ply -s lods.mlx -o part.flt: the LOD-set filter makes one layer
+// per level and the exporter writes the whole set, which OpenSceneGraph reads as LOD
+// nodes with outward-moving ranges, one center and fewer triangles per level.
+#include "flt_e2e_meshes.h"
+#include "flt_reader.h"
+#include "meshlabserver_runner.h"
+#include "osg_probe.h"
+
+#include <gtest/gtest.h>
+
+using namespace cadlod::test;
+
+namespace {
+
+const char* const kLodFilter = "Generate CAD LOD Set";
+
+bool lodFilterAvailable()
+{
+    const std::string dump = scratchDir("flt_lod_set") + "/filters.txt";
+    const ServerRun run = runMeshlabServer({"-d", dump});
+    return run.ok() && readText(dump).find(kLodFilter) != std::string::npos;
+}
+
+}  // namespace
+
+TEST(FltLodSet, WholeSetIsWrittenWithItsSwitchDistances)
+{
+    if (!lodFilterAvailable())
+        GTEST_SKIP() << "the filter \"" << kLodFilter << "\" is not in this build";
+    const std::string dir = scratchDir("flt_lod_set");
+    TestMesh torus;
+    makeTorusMesh(torus);
+    ASSERT_TRUE(savePly(dir + "/torus.ply", torus, vcg::tri::io::Mask::IOM_VERTNORMAL));
+    writeText(dir + "/lods.mlx",
+              mlxScript({mlxFilter(kLodFilter, {mlxParam("RichString", "levels", "50 75")})}));
+    const std::string flt = dir + "/torus.flt";
+    const ServerRun run = runMeshlabServer({"-i", dir + "/torus.ply", "-s", dir + "/lods.mlx", "-o", flt}, 300);
+    ASSERT_TRUE(run.ok()) << run.output;
+    EXPECT_NE(run.output.find("3 LOD level(s)"), std::string::npos) << run.output;
+
+    const OsgProbe probe = probeWithOsg(flt);
+    ASSERT_TRUE(probe.loaded);
+    ASSERT_EQ(probe.lods.size(), 3u);
+    EXPECT_TRUE(probe.outsideLods.empty());
+    EXPECT_EQ(probe.lods[0].triangles.size(), std::size_t(torus.fn)) << "level 0 is the original";
+    for (std::size_t l = 0; l < 3; ++l) {
+        EXPECT_LT(probe.lods[l].minRange, probe.lods[l].maxRange) << "level " << l;
+        EXPECT_EQ(probe.lods[l].center, probe.lods[0].center);
+        if (l > 0) {
+            EXPECT_LT(probe.lods[l].triangles.size(), probe.lods[l - 1].triangles.size());
+            EXPECT_GE(probe.lods[l].minRange, probe.lods[l - 1].minRange);
+            EXPECT_GE(probe.lods[l].maxRange, probe.lods[l - 1].maxRange);
+        }
+    }
+    EXPECT_NEAR(double(probe.lods[1].triangles.size()), 0.5 * torus.fn, 0.05 * torus.fn);
+    EXPECT_NEAR(double(probe.lods[2].triangles.size()), 0.25 * torus.fn, 0.05 * torus.fn);
+
+    cadlod::flt::LodModel model;
+    std::string error;
+    ASSERT_TRUE(cadlod::flt::readOpenFlightFile(flt, model, error)) << error;
+    ASSERT_EQ(model.levels.size(), 3u);
+    EXPECT_EQ(cadlod::flt::finestLevel(model), 0u);
+}
