@@ -1,7 +1,7 @@
 // CAD-like tessellations for the simplifier's tests and benchmarks, generated the way CAD
 // exporters triangulate B-rep faces: surfaces of revolution as long strips between
 // profile rings (two triangles per segment, no interior vertices), flat end faces as
-// fans from the centre, flat faces as fans from one corner. Everything shares vertices
+// fans from the centre, big flat faces as zig-zag strips between two sides. Everything shares vertices
 // within a part and is consistently oriented (outward normals).
 #pragma once
 
@@ -153,26 +153,27 @@ inline int shaftTriangles(int segments, int cylinderRings, bool fans)
     return segments * ((fans ? 2 : 4) + 2 * 5 + 2 * 3 * cylinderRings);
 }
 
-// A closed box (sizeX × sizeY × thickness) whose large faces are fans from one corner
-// over `perEdge` points per side, and whose sides are strips: the slivers CAD exporters
-// make of big planar faces.
-inline int fannedPlate(CadBuilder& b, double sizeX, double sizeY, double thickness, int perEdge)
+// A closed box (sizeX × sizeY × thickness) whose large faces are zig-zag strips between
+// `perEdge` points on each long side, and whose sides are strips: the slivers CAD
+// exporters make of big planar faces.
+inline int stripPlate(CadBuilder& b, double sizeX, double sizeY, double thickness, int perEdge)
 {
     const int first = int(b.points.size());
     std::vector<std::array<double, 2>> outline;  // counter-clockwise seen from +z
-    for (int i = 0; i < perEdge; ++i) outline.push_back({sizeX * i / perEdge, 0});
-    for (int i = 0; i < perEdge; ++i) outline.push_back({sizeX, sizeY * i / perEdge});
-    for (int i = 0; i < perEdge; ++i) outline.push_back({sizeX - sizeX * i / perEdge, sizeY});
-    for (int i = 0; i < perEdge; ++i) outline.push_back({0, sizeY - sizeY * i / perEdge});
+    for (int i = 0; i <= perEdge; ++i) outline.push_back({sizeX * i / perEdge, 0});
+    for (int i = perEdge; i >= 0; --i) outline.push_back({sizeX * i / perEdge, sizeY});
     const int n = int(outline.size());
     std::vector<int> bottom(n), top(n);
     for (int i = 0; i < n; ++i) {
         bottom[i] = b.addPoint(outline[i][0], outline[i][1], 0);
         top[i] = b.addPoint(outline[i][0], outline[i][1], thickness);
     }
-    for (int i = 1; i + 1 < n; ++i) {
-        b.addTriangle(top[0], top[i], top[i + 1]);
-        b.addTriangle(bottom[0], bottom[i + 1], bottom[i]);
+    for (int i = 0; i < perEdge; ++i) {
+        const int a0 = i, a1 = i + 1, c0 = n - 1 - i, c1 = n - 2 - i;  // y = 0 row, y = sizeY row
+        b.addTriangle(top[a0], top[a1], top[c1]);
+        b.addTriangle(top[a0], top[c1], top[c0]);
+        b.addTriangle(bottom[a0], bottom[c1], bottom[a1]);
+        b.addTriangle(bottom[a0], bottom[c0], bottom[c1]);
     }
     for (int i = 0; i < n; ++i) {
         const int k = (i + 1) % n;
@@ -188,14 +189,14 @@ inline void assembly(CadBuilder& b, int segments)
     b.currentPart = 0;
     revolve(b, shaftProfile(), shaftSpec(segments));
     b.currentPart = 1;
-    const int plate = fannedPlate(b, 120, 60, 8, std::max(8, segments / 4));
+    const int plate = stripPlate(b, 120, 60, 8, std::max(8, segments / 4));
     b.translate(plate, -10, -30, -20);
     for (int bolt = 0; bolt < 2; ++bolt) {
         b.currentPart = 2 + bolt;
         RevolveSpec s;
         s.segments = std::max(8, segments / 2);
         const int first = revolve(b, {{0, 0}, {0, 7}, {5, 7}, {5, 4}, {30, 4}, {30.5, 3.5}, {30.5, 0}}, s);
-        b.translate(first, 20 + 60 * bolt, 20, -25);
+        b.translate(first, 20 + 60 * bolt, 20, -28);
     }
 }
 
