@@ -5,6 +5,7 @@
 
 #include "core/layer_metadata.h"
 #include "vrml/importer.h"
+#include "vrml/vertex_welding.h"
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/update/bounding.h>
@@ -32,39 +33,56 @@ vcg::Color4b toColor(const std::array<float, 4>& c)
     return vcg::Color4b(b(c[0]), b(c[1]), b(c[2]), b(c[3]));
 }
 
-void copyScene(const vrml::Scene& scene, CMeshO& m, vcg::CallBackPos* cb)
+// Copies the scene into `m`; with `welding`, coincident vertices become one vertex whose
+// normal is the normalized sum of theirs (the first one's color wins).
+void copyScene(const vrml::Scene& scene, const vrml::Welding* welding, CMeshO& m, vcg::CallBackPos* cb)
 {
-    auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, scene.vertexCount());
+    const size_t vertexCount = welding ? welding->weldedCount : scene.vertexCount();
+    const size_t base = m.vert.size();
+    vcg::tri::Allocator<CMeshO>::AddVertices(m, vertexCount);
     auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, scene.triangleCount());
+    std::vector<bool> written(welding ? vertexCount : 0, false);
     auto partOf = facePartHandle(m);
     PartTable& table = partTableHandle(m)();
     table.clear();
-    size_t done = 0;
+    size_t sceneVertex = 0, done = 0;
+    std::vector<CVertexO*> partVertex;
     for (size_t p = 0; p < scene.parts.size(); ++p) {
         const vrml::Part& part = scene.parts[p];
         table.push_back({part.name, part.color});
         const vcg::Color4b partColor = toColor(part.color);
-        CMeshO::VertexIterator first = vi;
-        for (size_t i = 0; i < part.positions.size(); ++i, ++vi) {
-            vi->P() = vcg::Point3f(part.positions[i][0], part.positions[i][1], part.positions[i][2]);
-            if (!part.normals.empty())
-                vi->N() = vcg::Point3f(part.normals[i][0], part.normals[i][1], part.normals[i][2]);
-            vi->C() = part.colors.empty() ? partColor : toColor(part.colors[i]);
+        partVertex.resize(part.positions.size());
+        for (size_t i = 0; i < part.positions.size(); ++i, ++sceneVertex) {
+            const size_t target = welding ? welding->weldedIndex[sceneVertex] : sceneVertex;
+            CVertexO& v = m.vert[base + target];
+            partVertex[i] = &v;
+            const vcg::Point3f normal = part.normals.empty()
+                                            ? vcg::Point3f(0, 0, 0)
+                                            : vcg::Point3f(part.normals[i][0], part.normals[i][1], part.normals[i][2]);
+            if (welding && written[target]) {
+                v.N() += normal;
+                continue;
+            }
+            if (welding) written[target] = true;
+            v.P() = vcg::Point3f(part.positions[i][0], part.positions[i][1], part.positions[i][2]);
+            v.N() = normal;
+            v.C() = part.colors.empty() ? partColor : toColor(part.colors[i]);
         }
         for (size_t t = 0; t < part.triangleCount(); ++t, ++fi) {
-            for (int k = 0; k < 3; ++k) fi->V(k) = &*(first + part.triangles[3 * t + size_t(k)]);
+            for (int k = 0; k < 3; ++k) fi->V(k) = partVertex[part.triangles[3 * t + size_t(k)]];
             fi->C() = part.faceColors.empty() ? partColor : toColor(part.faceColors[t]);
             partOf[fi] = int(p);
         }
         done += part.triangleCount();
         if (cb) cb(60 + int(30.0 * double(done) / double(std::max<size_t>(1, scene.triangleCount()))), "Building mesh");
     }
+    if (welding)
+        for (size_t i = base; i < m.vert.size(); ++i) m.vert[i].N().Normalize();
 }
 
-int mergeVertices(CMeshO& m, float tolerance)
+int mergeCloseVertices(CMeshO& m, float tolerance)
 {
-    const int merged = tolerance > 0 ? vcg::tri::Clean<CMeshO>::MergeCloseVertex(m, tolerance)
-                                     : vcg::tri::Clean<CMeshO>::RemoveDuplicateVertex(m, false);
+    const int merged = vcg::tri::Clean<CMeshO>::MergeCloseVertex(m, tolerance);
     vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
     return merged;
 }
@@ -127,11 +145,16 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     const qint64 parsedMs = timer.elapsed();
     mask = vcg::tri::io::Mask::IOM_VERTNORMAL | vcg::tri::io::Mask::IOM_VERTCOLOR | vcg::tri::io::Mask::IOM_FACECOLOR;
     m.Enable(mask);
-    copyScene(scene, m.cm, cb);
-    result.scene.parts.clear();
-
     const bool merge = !par.hasParameter(kMergeVertices) || par.getBool(kMergeVertices);
-    const int merged = merge ? mergeVertices(m.cm, par.hasParameter(kMergeTolerance) ? par.getFloat(kMergeTolerance) : 0.0f) : 0;
+    const float tolerance = par.hasParameter(kMergeTolerance) ? par.getFloat(kMergeTolerance) : 0.0f;
+    vrml::Welding welding;
+    if (merge) welding = vrml::weldCoincidentVertices(scene);
+    copyScene(scene, merge ? &welding : nullptr, m.cm, cb);
+    int merged = merge ? int(scene.vertexCount() - welding.weldedCount) : 0;
+    welding = {};
+    result.scene.parts.clear();
+    result.scene.parts.shrink_to_fit();
+    if (merge && tolerance > 0) merged += mergeCloseVertices(m.cm, tolerance);
     vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m.cm);
     vcg::tri::UpdateBounding<CMeshO>::Box(m.cm);
 

@@ -27,6 +27,48 @@ bool isWordChar(char c)
     }
 }
 
+// Clinger's fast path: up to 15 significant digits and a power of ten up to 22 convert
+// exactly through double; anything else (or a malformed number) returns nullptr and the
+// caller uses std::from_chars. Locale-independent by construction.
+const char* parseSimpleFloat(const char* p, const char* end, float& value)
+{
+    static const double kPow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                    1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    const bool negative = p < end && *p == '-';
+    if (negative) ++p;
+    uint64_t mantissa = 0;
+    int digits = 0, exponent = 0;
+    const char* start = p;
+    while (p < end && unsigned(*p - '0') < 10) {
+        mantissa = mantissa * 10 + unsigned(*p++ - '0');
+        if (mantissa) ++digits;
+    }
+    if (p < end && *p == '.') {
+        ++p;
+        while (p < end && unsigned(*p - '0') < 10) {
+            mantissa = mantissa * 10 + unsigned(*p++ - '0');
+            if (mantissa) ++digits;
+            --exponent;
+        }
+    }
+    if (p == start || (p == start + 1 && *start == '.')) return nullptr;
+    if (p < end && (*p == 'e' || *p == 'E')) {
+        const char* q = p + 1;
+        const bool negExp = q < end && *q == '-';
+        if (q < end && (*q == '-' || *q == '+')) ++q;
+        if (q >= end || unsigned(*q - '0') >= 10) return nullptr;
+        int e = 0;
+        while (q < end && unsigned(*q - '0') < 10 && e < 10000) e = e * 10 + (*q++ - '0');
+        exponent += negExp ? -e : e;
+        p = q;
+    }
+    if (digits > 15 || exponent < -22 || exponent > 22) return nullptr;
+    double v = double(mantissa);
+    v = exponent < 0 ? v / kPow10[-exponent] : v * kPow10[exponent];
+    value = float(negative ? -v : v);
+    return p;
+}
+
 const char* parseHex(const char* p, const char* end, int64_t& v)
 {
     auto r = std::from_chars(p + 2, end, v, 16);
@@ -175,6 +217,10 @@ bool Lexer::readFloat(float& value)
     skipSpace();
     if (p_ >= end_ || !isNumberStart(*p_, p_ + 1 < end_ ? p_[1] : '\0')) return false;
     const char* p = *p_ == '+' ? p_ + 1 : p_;
+    if (const char* q = parseSimpleFloat(p, end_, value); q && (q >= end_ || !isWordChar(*q))) {
+        p_ = q;
+        return true;
+    }
     auto r = std::from_chars(p, end_, value);
     if (r.ec != std::errc() || (r.ptr < end_ && isWordChar(*r.ptr) && *r.ptr != '-')) {
         // Hex, or something odd like 1.#QNAN: take the slow path on the whole token.
