@@ -214,7 +214,13 @@ private:
     void elevationGrid(const Node& g, const Mat4& world, Part& part)
     {
         const std::vector<float>* heights = floatsField(g, "height");
-        OwnedFaceSet f = makeElevationGrid(int(floatField(g, "xDimension", 0)), int(floatField(g, "zDimension", 0)),
+        const double xDim = floatField(g, "xDimension", 0), zDim = floatField(g, "zDimension", 0);
+        if (xDim * zDim > double(heights ? heights->size() : 0)) {  // also guards absurd dimensions
+            ctx_.scene.diagnostics.warn("bad ElevationGrid", g.where,
+                                        "xDimension x zDimension exceeds the number of heights; grid skipped");
+            return;
+        }
+        OwnedFaceSet f = makeElevationGrid(int(xDim), int(zDim),
                                            floatField(g, "xSpacing", 1), floatField(g, "zSpacing", 1),
                                            heights ? *heights : std::vector<float>{});
         FaceSetInput in;

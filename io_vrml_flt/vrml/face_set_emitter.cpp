@@ -292,7 +292,15 @@ private:
     void triangulateFace(const Face& f)
     {
         faceTriangles_.clear();
-        if (in_.convex || f.cornerCount == 3) {
+        // Ear clipping is quadratic: a huge concave face is fanned (with a warning) rather
+        // than stalling the import.
+        constexpr uint32_t kMaxEarClippedCorners = 5000;
+        const bool hugeConcave = !in_.convex && f.cornerCount > kMaxEarClippedCorners;
+        if (hugeConcave)
+            diag_.warn("huge face", in_.where,
+                       "face " + std::to_string(f.number) + " has " + std::to_string(f.cornerCount) +
+                           " vertices; fan-triangulated instead of ear clipping");
+        if (in_.convex || f.cornerCount == 3 || hugeConcave) {
             for (uint32_t k = 1; k + 1 < f.cornerCount; ++k) faceTriangles_.push_back({0, k, k + 1});
             return;
         }
