@@ -33,9 +33,10 @@ vcg::Color4b toColor(const std::array<float, 4>& c)
     return vcg::Color4b(b(c[0]), b(c[1]), b(c[2]), b(c[3]));
 }
 
-// Copies the scene into `m`; with `welding`, coincident vertices become one vertex whose
-// normal is the normalized sum of theirs (the first one's color wins).
-void copyScene(const vrml::Scene& scene, const vrml::Welding* welding, CMeshO& m, vcg::CallBackPos* cb)
+// Moves the scene into `m` (each part's arrays are freed once copied, to keep the peak
+// memory low); with `welding`, coincident vertices become one vertex whose normal is the
+// normalized sum of theirs (the first one's color wins).
+void moveScene(vrml::Scene& scene, const vrml::Welding* welding, CMeshO& m, vcg::CallBackPos* cb)
 {
     const size_t vertexCount = welding ? welding->weldedCount : scene.vertexCount();
     const size_t base = m.vert.size();
@@ -46,9 +47,10 @@ void copyScene(const vrml::Scene& scene, const vrml::Welding* welding, CMeshO& m
     PartTable& table = partTableHandle(m)();
     table.clear();
     size_t sceneVertex = 0, done = 0;
+    const size_t triangleCount = scene.triangleCount();
     std::vector<CVertexO*> partVertex;
     for (size_t p = 0; p < scene.parts.size(); ++p) {
-        const vrml::Part& part = scene.parts[p];
+        vrml::Part& part = scene.parts[p];
         table.push_back({part.name, part.color});
         const vcg::Color4b partColor = toColor(part.color);
         partVertex.resize(part.positions.size());
@@ -74,7 +76,8 @@ void copyScene(const vrml::Scene& scene, const vrml::Welding* welding, CMeshO& m
             partOf[fi] = int(p);
         }
         done += part.triangleCount();
-        if (cb) cb(60 + int(30.0 * double(done) / double(std::max<size_t>(1, scene.triangleCount()))), "Building mesh");
+        part = vrml::Part{};
+        if (cb) cb(60 + int(30.0 * double(done) / double(std::max<size_t>(1, triangleCount))), "Building mesh");
     }
     if (welding)
         for (size_t i = base; i < m.vert.size(); ++i) m.vert[i].N().Normalize();
@@ -141,7 +144,8 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
         report(plugin, GLLogStream::WARNING, result.error);
         return false;
     }
-    const vrml::Scene& scene = result.scene;
+    vrml::Scene& scene = result.scene;
+    const size_t sceneVertices = scene.vertexCount();
     const qint64 parsedMs = timer.elapsed();
     mask = vcg::tri::io::Mask::IOM_VERTNORMAL | vcg::tri::io::Mask::IOM_VERTCOLOR | vcg::tri::io::Mask::IOM_FACECOLOR;
     m.Enable(mask);
@@ -149,11 +153,9 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     const float tolerance = par.hasParameter(kMergeTolerance) ? par.getFloat(kMergeTolerance) : 0.0f;
     vrml::Welding welding;
     if (merge) welding = vrml::weldCoincidentVertices(scene);
-    copyScene(scene, merge ? &welding : nullptr, m.cm, cb);
-    int merged = merge ? int(scene.vertexCount() - welding.weldedCount) : 0;
+    int merged = merge ? int(sceneVertices - welding.weldedCount) : 0;
+    moveScene(scene, merge ? &welding : nullptr, m.cm, cb);
     welding = {};
-    result.scene.parts.clear();
-    result.scene.parts.shrink_to_fit();
     if (merge && tolerance > 0) merged += mergeCloseVertices(m.cm, tolerance);
     vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m.cm);
     vcg::tri::UpdateBounding<CMeshO>::Box(m.cm);
