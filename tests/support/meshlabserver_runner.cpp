@@ -1,6 +1,7 @@
 #include "meshlabserver_runner.h"
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -37,7 +38,9 @@ ServerRun runMeshlabServer(const std::vector<std::string>& args, int timeoutSeco
 {
     const std::string dir = scratchDir("meshlabserver-runs");
     static int counter = 0;
-    const std::string logFile = dir + "/run" + std::to_string(++counter) + ".log";
+    // ctest runs test processes in parallel: the pid keeps their files apart.
+    const std::string logFile =
+        dir + "/run-" + std::to_string(getpid()) + "-" + std::to_string(++counter) + ".log";
     const std::string outFile = logFile + ".out";
 
     std::ostringstream cmd;
