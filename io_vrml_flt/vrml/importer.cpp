@@ -1,6 +1,7 @@
 #include "vrml/importer.h"
 
 #include "vrml/evaluation.h"
+#include "vrml/mapped_file.h"
 #include "vrml/parser.h"
 #include "vrml/proto.h"
 
@@ -57,22 +58,31 @@ public:
                                  const Owner& owner) { loadInline(urls, where, world, owner); };
     }
 
-    ImportResult run(std::string text, const std::string& fileName)
+    // `bytes` is the file as stored (gzip or not); `release` is called once they are
+    // no longer needed (after parsing), to free the memory before evaluation.
+    ImportResult run(std::string_view bytes, const std::string& fileName, const std::function<void()>& release)
     {
-        SourceText source = decodeSourceBytes(std::move(text), fileName, options_.maxInflatedBytes);
-        if (!source.ok()) {
-            result_.error = source.error;
-            return std::move(result_);
+        SourceText source;
+        std::string_view text = bytes;
+        if (bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f &&
+            static_cast<unsigned char>(bytes[1]) == 0x8b) {
+            source = decodeSourceBytes(std::string(bytes), fileName, options_.maxInflatedBytes);
+            release();
+            if (!source.ok()) {
+                result_.error = source.error;
+                return std::move(result_);
+            }
+            text = source.text;
         }
-        result_.scene.stats.bytesRead += source.text.size();
+        result_.scene.stats.bytesRead += text.size();
         ParseOptions parse = parseOptions(fileName);
         if (options_.progress)
             parse.progress = [this](size_t done, size_t total) {
                 options_.progress(total ? double(done) / double(total) : 1.0);
             };
-        ParsedFile parsed = parseVrml(source.text, fileName, result_.scene.diagnostics, parse);
-        source.text.clear();
-        source.text.shrink_to_fit();
+        ParsedFile parsed = parseVrml(text, fileName, result_.scene.diagnostics, parse);
+        release();
+        source = SourceText{};
         if (!parsed.error.empty()) {
             result_.error = parsed.error;
             return std::move(result_);
@@ -208,18 +218,19 @@ private:
 
 ImportResult importVrmlText(std::string text, const std::string& fileName, const ImportOptions& options)
 {
-    return Importer(options).run(std::move(text), fileName);
+    return Importer(options).run(text, fileName, [&text] { std::string().swap(text); });
 }
 
 ImportResult importVrmlFile(const std::string& path, const ImportOptions& options)
 {
-    std::string bytes, error;
-    if (!readFileBytes(path, bytes, error)) {
+    MappedFile file;
+    std::string error;
+    if (!file.open(path, error)) {
         ImportResult r;
         r.error = error;
         return r;
     }
-    return importVrmlText(std::move(bytes), path, options);
+    return Importer(options).run(file.bytes(), path, [&file] { file.release(); });
 }
 
 }  // namespace cadlod::vrml

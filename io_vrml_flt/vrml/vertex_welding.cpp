@@ -28,6 +28,8 @@ bool samePoint(const Vec3f& a, const Vec3f& b)
 
 }  // namespace
 
+// Open addressing; each slot keeps 32 hash bits next to the welded index, so a probe
+// only reads a candidate's position when the hashes agree (one cache miss per vertex).
 Welding weldCoincidentVertices(const Scene& scene)
 {
     Welding w;
@@ -35,20 +37,33 @@ Welding weldCoincidentVertices(const Scene& scene)
     w.weldedIndex.reserve(n);
     size_t capacity = 16;
     while (capacity < 2 * n) capacity *= 2;
-    constexpr uint32_t kEmpty = UINT32_MAX;
-    std::vector<uint32_t> table(capacity, kEmpty);  // welded index per slot
+    constexpr uint64_t kEmpty = UINT64_MAX;
+    std::vector<uint64_t> table(capacity, kEmpty);  // (hash tag << 32) | welded index
     std::vector<const Vec3f*> representative;
     representative.reserve(n);
+    constexpr size_t kPrefetchDistance = 16;  // the table is far bigger than the caches
     for (const Part& part : scene.parts)
-        for (const Vec3f& p : part.positions) {
-            size_t slot = hashPoint(p) & (capacity - 1);
-            while (table[slot] != kEmpty && !samePoint(*representative[table[slot]], p))
-                slot = (slot + 1) & (capacity - 1);
-            if (table[slot] == kEmpty) {
-                table[slot] = uint32_t(representative.size());
-                representative.push_back(&p);
+        for (size_t i = 0; i < part.positions.size(); ++i) {
+            if (i + kPrefetchDistance < part.positions.size())
+                __builtin_prefetch(&table[hashPoint(part.positions[i + kPrefetchDistance]) & (capacity - 1)]);
+            const Vec3f& p = part.positions[i];
+            const uint64_t h = hashPoint(p);
+            const uint64_t tag = h >> 32;
+            size_t slot = h & (capacity - 1);
+            for (;; slot = (slot + 1) & (capacity - 1)) {
+                const uint64_t entry = table[slot];
+                if (entry == kEmpty) {
+                    table[slot] = (tag << 32) | representative.size();
+                    w.weldedIndex.push_back(uint32_t(representative.size()));
+                    representative.push_back(&p);
+                    break;
+                }
+                const uint32_t id = uint32_t(entry);
+                if ((entry >> 32) == tag && samePoint(*representative[id], p)) {
+                    w.weldedIndex.push_back(id);
+                    break;
+                }
             }
-            w.weldedIndex.push_back(table[slot]);
         }
     w.weldedCount = uint32_t(representative.size());
     return w;
