@@ -1,13 +1,16 @@
 // Every file the writer makes is read back by OpenSceneGraph's OpenFlight loader and
 // checked: LOD nodes, ranges, centers, triangles per level, positions and normals,
 // colors, names, culling and units.
+#include "flt_reader.h"
 #include "flt_writer.h"
 #include "model_fixtures.h"
 #include "osg_probe.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <fstream>
 
 using namespace cadlod::flt;
 using namespace cadlod::test;
@@ -176,4 +179,50 @@ TEST(OsgReadbackLarge, PartWithMoreThan65535VerticesInMeshRecords)
     const TriangleDiff d = compareTriangles(expected, got);
     EXPECT_LT(d.position, 1e-5f);
     EXPECT_LT(d.normal, 1e-5f);
+}
+
+// A polygon with more vertices than one Vertex List record holds: the list is split
+// over several records, which OpenSceneGraph and our reader join into one face.
+TEST(OsgReadbackLarge, SplitVertexListIsOnePolygon)
+{
+    constexpr int n = 20000;
+    static_assert(n > int(cadlod::flt::size::MaxVertexListEntries), "must overflow one record");
+    std::vector<std::uint8_t> bytes;
+    ByteWriter w(bytes);
+    writeHeader(w, HeaderFields{});
+    writeColorPalette(w);
+    writeMaterial(w, MaterialFields{});
+    writeVertexPalette(w, std::uint32_t(8 + n * size::VertexNormal));
+    const Vec3f up{0, 0, 1};
+    std::vector<std::uint32_t> offsets;
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * M_PI * i / n;
+        writeVertex(w, {std::cos(a), std::sin(a), 0.0}, &up, nullptr);
+        offsets.push_back(std::uint32_t(8 + i * size::VertexNormal));
+    }
+    writePush(w);
+    writeGroup(w, "g");
+    writePush(w);
+    writeObject(w, "disc");
+    writePush(w);
+    writeFace(w, Appearance{});
+    writePush(w);
+    writeVertexList(w, offsets);
+    writePop(w);
+    writePop(w);
+    writePop(w);
+    writePop(w);
+    const std::string path = scratch("big_polygon.flt");
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), long(bytes.size()));
+
+    const OsgProbe probe = probeWithOsg(path);
+    ASSERT_TRUE(probe.loaded);
+    EXPECT_EQ(probe.outsideLods.size(), std::size_t(n - 2)) << "one convex polygon, tessellated";
+
+    LodModel model;
+    std::string error;
+    ASSERT_TRUE(readOpenFlightFile(path, model, error)) << error;
+    ASSERT_EQ(model.levels.size(), 1u);
+    EXPECT_EQ(model.triangleCount(), std::size_t(n - 2));
+    EXPECT_EQ(model.levels[0].parts[0].positions.size(), std::size_t(n));
 }
