@@ -146,7 +146,9 @@ private:
             for (size_t k = start; k < end; ++k) {
                 const Corner c{idx[k], int32_t(k), sequence++};
                 if (size_t(c.coord) >= coordCount) {
-                    if (!bad) skipFace(f, "bad index", "coordIndex " + std::to_string(c.coord) + " out of range");
+                    if (!bad)
+                        skipFace(f, "bad index",
+                                 "coordIndex[" + std::to_string(k) + "] = " + std::to_string(c.coord) + " out of range");
                     bad = true;
                     continue;
                 }

@@ -455,6 +455,7 @@ ParsedFile parseVrml(std::string_view text, const std::string& fileName, Diagnos
         file.error = fileName + ":1:1: not a VRML file (expected a '#VRML V2.0 utf8' or '#VRML V1.0 ascii' header)";
         return file;
     }
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
     ParsedFile file = Parser(text, fileName, diag, options).run();
     file.version = version;
     return file;

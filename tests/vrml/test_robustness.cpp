@@ -65,3 +65,17 @@ DEF B Shape { geometry IndexedFaceSet { coord USE P coordIndex [ 4 2 3 ] } }
     EXPECT_EQ(welded(0, 1, 1), welded(1, 1, 1));
     EXPECT_NE(welded(0, 1, 0), welded(1, 0, 1));
 }
+
+TEST(VrmlRobustness, ByteOrderMarkAndWindowsLineEndings)
+{
+    const Scene s = load("\xEF\xBB\xBF#VRML V2.0 utf8\r\nShape {\r\n geometry Box { size 1 1 1 }\r\n}\r\n");
+    EXPECT_EQ(s.triangleCount(), 12u);
+    EXPECT_EQ(s.diagnostics.total(), 0);
+}
+
+TEST(VrmlRobustness, WindowsNanTextEndsTheValueLikeAComment)
+{
+    // Some Windows exporters print 1.#QNAN: '#' starts a comment, the number reads as 1.
+    const Scene s = load(ifs97("0 0 0, 1 0 0, 0 1.#QNAN\n 0", "0 1 2"));
+    EXPECT_EQ(s.triangleCount(), 1u);
+}
