@@ -20,7 +20,7 @@ PACKAGES=(
   libcoin-dev
 )
 if [ "${CADLOD_BENCH_DEPS:-0}" = 1 ]; then
-  PACKAGES+=(libmeshoptimizer-dev libcgal-dev libgmp-dev libmpfr-dev time)
+  PACKAGES+=(libmeshoptimizer-dev libcgal-dev libgmp-dev libmpfr-dev time gnuplot-nox)
 fi
 
 say() { printf '[bootstrap] %s\n' "$*"; }

@@ -1,0 +1,459 @@
+// osg_render: what a VR engine user of a model sees (paper §5, Table 1), measured with
+// OpenSceneGraph on the current X display: load time (wall clock), peak memory,
+// triangles per LOD level, and the frame rate along a fixed camera path that orbits the
+// model while moving from near to far, so the OpenFlight LOD ranges switch levels.
+// `--level K` shows only level K of every LOD (or use a plain mesh file) to measure one
+// level alone; `--shot FILE` writes one shaded (optionally wireframe) picture instead.
+// Output: one "key value" line per figure, for scripts.
+#include <osg/ComputeBoundsVisitor>
+#include <osg/Geometry>
+#include <osg/LOD>
+#include <osg/Material>
+#include <osg/TriangleFunctor>
+#include <osgDB/ReadFile>
+#include <osgDB/Registry>
+#include <osgDB/WriteFile>
+#include <osgFX/Scribe>
+#include <osgUtil/SmoothingVisitor>
+#include <osgViewer/Viewer>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr double kFovY = 45.0;  // degrees, like the LOD-set filter's default
+
+struct Options {
+    std::string model;
+    int frames = 240;
+    int width = 640;
+    int height = 480;
+    int level = -1;             // -1: LOD ranges active; K: only level K shown
+    double nearDistance = 0;    // camera path, model units; 0: automatic
+    double farDistance = 0;
+    double elevation = 20;      // degrees above the XY plane (Z up)
+    double azimuth = 35;        // degrees, for --shot
+    double shotDistance = 2.4;  // bounding radii, for --shot
+    double creaseAngle = -1;    // >= 0: recompute normals, split above this angle (degrees)
+    int upAxis = 2;             // model axis pointing up on screen (0 x, 1 y, 2 z)
+    osg::Vec3d focus{0.5, 0.5, 0.5};  // looked-at point for --shot, as fractions of the bbox
+    std::string shot;
+    bool wire = false;
+    bool render = true;         // false: load and count only
+};
+
+[[noreturn]] void usage(const char* why)
+{
+    std::fprintf(stderr,
+                 "osg_render: %s\n"
+                 "usage: osg_render MODEL [--frames N] [--size WxH] [--level K] [--near D --far D]\n"
+                 "                  [--elevation DEG] [--crease DEG] [--no-render]\n"
+                 "       osg_render MODEL --shot OUT.png [--wire] [--azimuth DEG] [--distance RADII]\n"
+                 "                  [--focus FX,FY,FZ] ...\n"
+                 "       (--up x|y|z: the model axis shown upwards, default z)\n",
+                 why);
+    std::exit(2);
+}
+
+double number(int& i, int argc, char** argv)
+{
+    if (i + 1 >= argc)
+        usage("missing value after an option");
+    char* end = nullptr;
+    const double v = std::strtod(argv[++i], &end);
+    if (end == argv[i] || *end)
+        usage("not a number");
+    return v;
+}
+
+int axisIndex(const std::string& name)
+{
+    if (name == "x" || name == "y" || name == "z")
+        return name[0] - 'x';
+    usage("--up wants x, y or z");
+}
+
+Options parseOptions(int argc, char** argv)
+{
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--frames") o.frames = int(number(i, argc, argv));
+        else if (a == "--level") o.level = int(number(i, argc, argv));
+        else if (a == "--near") o.nearDistance = number(i, argc, argv);
+        else if (a == "--far") o.farDistance = number(i, argc, argv);
+        else if (a == "--elevation") o.elevation = number(i, argc, argv);
+        else if (a == "--azimuth") o.azimuth = number(i, argc, argv);
+        else if (a == "--distance") o.shotDistance = number(i, argc, argv);
+        else if (a == "--crease") o.creaseAngle = number(i, argc, argv);
+        else if (a == "--wire") o.wire = true;
+        else if (a == "--up" && i + 1 < argc) o.upAxis = axisIndex(argv[++i]);
+        else if (a == "--focus" && i + 1 < argc) {
+            if (std::sscanf(argv[++i], "%lf,%lf,%lf", &o.focus.x(), &o.focus.y(), &o.focus.z()) != 3)
+                usage("--focus wants FX,FY,FZ (fractions of the bounding box)");
+        }
+        else if (a == "--no-render") o.render = false;
+        else if (a == "--shot" && i + 1 < argc) o.shot = argv[++i];
+        else if (a == "--size" && i + 1 < argc) {
+            if (std::sscanf(argv[++i], "%dx%d", &o.width, &o.height) != 2)
+                usage("--size wants WxH");
+        } else if (!a.empty() && a[0] != '-' && o.model.empty()) o.model = a;
+        else usage(("unknown argument " + a).c_str());
+    }
+    if (o.model.empty())
+        usage("no model file");
+    if (o.frames < 2 || o.width < 16 || o.height < 16)
+        usage("need at least 2 frames and a 16x16 window");
+    return o;
+}
+
+double peakRssKb()
+{
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_maxrss);
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Loads the reader plugin first so that the timed part is reading the file only.
+osg::ref_ptr<osg::Node> loadTimed(const std::string& file, double& seconds)
+{
+    osgDB::Registry* registry = osgDB::Registry::instance();
+    registry->loadLibrary(registry->createLibraryNameForFile(file));
+    const auto start = std::chrono::steady_clock::now();
+    osg::ref_ptr<osg::Node> node = osgDB::readRefNodeFile(file);
+    seconds = secondsSince(start);
+    return node;
+}
+
+// Degenerate triangles (from stitched triangle strips) are not counted.
+struct TriangleCounter {
+    std::size_t count = 0;
+    void operator()(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c)
+    {
+        count += a != b && b != c && a != c;
+    }
+};
+
+// Triangles of every drawable below a node, all LOD children included.
+class CountTriangles : public osg::NodeVisitor
+{
+public:
+    CountTriangles() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::Drawable& d) override
+    {
+        osg::TriangleFunctor<TriangleCounter> f;
+        d.accept(f);
+        triangles += f.count;
+    }
+    std::size_t triangles = 0;
+};
+
+std::size_t trianglesBelow(osg::Node& n)
+{
+    CountTriangles c;
+    n.accept(c);
+    return c.triangles;
+}
+
+// One child of one osg::LOD. The OpenFlight reader turns every LOD record into an
+// osg::LOD with one child, so a level is the set of children sharing a range.
+struct LodChild {
+    osg::LOD* lod;
+    unsigned child;
+};
+
+struct Level {
+    float nearRange = 0;  // visible for nearRange <= d < farRange
+    float farRange = 0;
+    std::vector<LodChild> children;
+    std::size_t triangles = 0;
+};
+
+class CollectLods : public osg::NodeVisitor
+{
+public:
+    CollectLods() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::LOD& lod) override
+    {
+        for (unsigned i = 0; i < lod.getNumChildren() && i < lod.getNumRanges(); ++i)
+            children.push_back({&lod, i});
+        traverse(lod);
+    }
+    std::vector<LodChild> children;
+};
+
+// Levels sorted from finest (nearest range) to coarsest.
+std::vector<Level> findLevels(osg::Node& root)
+{
+    CollectLods c;
+    root.accept(c);
+    std::map<std::pair<float, float>, Level> byRange;
+    for (const LodChild& lc : c.children) {
+        const auto range = std::make_pair(lc.lod->getMinRange(lc.child), lc.lod->getMaxRange(lc.child));
+        Level& level = byRange[range];
+        level.nearRange = range.first;
+        level.farRange = range.second;
+        level.children.push_back(lc);
+        level.triangles += trianglesBelow(*lc.lod->getChild(lc.child));
+    }
+    std::vector<Level> levels;
+    for (auto& entry : byRange)
+        levels.push_back(entry.second);
+    return levels;
+}
+
+// Shows level `k` at every distance and hides the others.
+void pinLevel(std::vector<Level>& levels, int k)
+{
+    if (k < 0 || k >= int(levels.size())) {
+        std::fprintf(stderr, "osg_render: the model has %zu LOD levels, no level %d\n", levels.size(), k);
+        std::exit(1);
+    }
+    for (int i = 0; i < int(levels.size()); ++i)
+        for (const LodChild& lc : levels[std::size_t(i)].children)
+            lc.lod->setRange(lc.child, 0.0f, i == k ? std::numeric_limits<float>::max() : 0.0f);
+}
+
+void recomputeNormals(osg::Node& root, double creaseDegrees)
+{
+    class Smooth : public osg::NodeVisitor
+    {
+    public:
+        explicit Smooth(double crease) : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN), crease_(crease) {}
+        void apply(osg::Geometry& g) override { osgUtil::SmoothingVisitor::smooth(g, crease_); }
+
+    private:
+        double crease_;
+    };
+    Smooth s(osg::DegreesToRadians(creaseDegrees));
+    root.accept(s);
+}
+
+// A uniform matte material for pictures, so that only the mesh changes between them.
+void applyPictureMaterial(osg::Node& root)
+{
+    osg::ref_ptr<osg::Material> m = new osg::Material;
+    m->setColorMode(osg::Material::OFF);
+    m->setAmbient(osg::Material::FRONT_AND_BACK, osg::Vec4(0.25f, 0.27f, 0.30f, 1));
+    m->setDiffuse(osg::Material::FRONT_AND_BACK, osg::Vec4(0.70f, 0.74f, 0.80f, 1));
+    m->setSpecular(osg::Material::FRONT_AND_BACK, osg::Vec4(0.35f, 0.35f, 0.35f, 1));
+    m->setShininess(osg::Material::FRONT_AND_BACK, 40);
+    root.getOrCreateStateSet()->setAttributeAndModes(m, osg::StateAttribute::ON | osg::StateAttribute::OVERRIDE);
+}
+
+osg::ref_ptr<osgViewer::Viewer> makeViewer(const Options& o, osg::Node* scene)
+{
+    osg::ref_ptr<osg::GraphicsContext::Traits> t = new osg::GraphicsContext::Traits;
+    t->x = 0;
+    t->y = 0;
+    t->width = o.width;
+    t->height = o.height;
+    t->windowDecoration = false;
+    t->doubleBuffer = true;
+    t->vsync = false;
+    osg::ref_ptr<osg::GraphicsContext> gc = osg::GraphicsContext::createGraphicsContext(t);
+    if (!gc) {
+        std::fprintf(stderr, "osg_render: cannot open a %dx%d OpenGL window (DISPLAY=%s)\n", o.width, o.height,
+                     std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "unset");
+        std::exit(1);
+    }
+    osg::ref_ptr<osgViewer::Viewer> viewer = new osgViewer::Viewer;
+    viewer->setThreadingModel(osgViewer::Viewer::SingleThreaded);
+    osg::Camera* camera = viewer->getCamera();
+    camera->setGraphicsContext(gc);
+    camera->setViewport(0, 0, o.width, o.height);
+    camera->setProjectionMatrixAsPerspective(kFovY, double(o.width) / o.height, 1.0, 10.0);
+    camera->setClearColor(osg::Vec4(1, 1, 1, 1));
+    camera->setDrawBuffer(GL_BACK);
+    camera->setReadBuffer(GL_BACK);
+    viewer->setSceneData(scene);
+    viewer->realize();
+    if (gc->makeCurrent()) {
+        const GLubyte* renderer = glGetString(GL_RENDERER);
+        std::printf("gl_renderer %s\n", renderer ? reinterpret_cast<const char*>(renderer) : "unknown");
+        gc->releaseContext();
+    }
+    return viewer;
+}
+
+osg::Vec3d unitAxis(int i)
+{
+    osg::Vec3d v(0, 0, 0);
+    v[i % 3] = 1;
+    return v;
+}
+
+// Azimuth turns about the up axis; elevation lifts the eye towards it.
+void lookAt(osgViewer::Viewer& viewer, const osg::Vec3d& target, int upAxis, double distance, double azimuthDeg,
+            double elevationDeg)
+{
+    const double az = osg::DegreesToRadians(azimuthDeg), el = osg::DegreesToRadians(elevationDeg);
+    const osg::Vec3d up = unitAxis(upAxis), a = unitAxis(upAxis + 1), b = unitAxis(upAxis + 2);
+    const osg::Vec3d dir = (a * std::cos(az) + b * std::sin(az)) * std::cos(el) + up * std::sin(el);
+    viewer.getCamera()->setViewMatrixAsLookAt(target + dir * distance, target, up);
+}
+
+struct Capture : osg::Camera::DrawCallback {
+    osg::ref_ptr<osg::Image> image = new osg::Image;
+    void operator()(osg::RenderInfo& info) const override
+    {
+        const osg::Viewport* vp = info.getCurrentCamera()->getViewport();
+        image->readPixels(int(vp->x()), int(vp->y()), int(vp->width()), int(vp->height()), GL_RGB, GL_UNSIGNED_BYTE);
+    }
+};
+
+int writeShot(const Options& o, osg::Node* model, const osg::BoundingBox& box)
+{
+    applyPictureMaterial(*model);
+    osg::ref_ptr<osg::Node> scene = model;
+    if (o.wire) {
+        osg::ref_ptr<osgFX::Scribe> scribe = new osgFX::Scribe;
+        scribe->setWireframeColor(osg::Vec4(0.1f, 0.1f, 0.15f, 1));
+        scribe->addChild(model);
+        scene = scribe;
+    }
+    osg::ref_ptr<osgViewer::Viewer> viewer = makeViewer(o, scene.get());
+    osg::ref_ptr<Capture> capture = new Capture;
+    const osg::Vec3d target(box.xMin() + o.focus.x() * (box.xMax() - box.xMin()),
+                            box.yMin() + o.focus.y() * (box.yMax() - box.yMin()),
+                            box.zMin() + o.focus.z() * (box.zMax() - box.zMin()));
+    lookAt(*viewer, target, o.upAxis, o.shotDistance * box.radius(), o.azimuth, o.elevation);
+    viewer->frame();
+    viewer->getCamera()->setFinalDrawCallback(capture);
+    viewer->frame();
+    viewer->getCamera()->setFinalDrawCallback(nullptr);
+    if (!osgDB::writeImageFile(*capture->image, o.shot)) {
+        std::fprintf(stderr, "osg_render: cannot write %s\n", o.shot.c_str());
+        return 1;
+    }
+    std::printf("shot %s\n", o.shot.c_str());
+    return 0;
+}
+
+// The farthest finite switch-in distance.
+double farthestRange(const std::vector<Level>& levels, double radius)
+{
+    double far = 0;
+    for (const Level& l : levels)
+        if (l.farRange < 1e6 * radius)
+            far = std::max(far, double(l.farRange));
+    return far;
+}
+
+// The distance at which the bounding sphere looks `pixels` tall in the window.
+double distanceForHeight(const Options& o, double radius, double pixels)
+{
+    return radius * o.height / (pixels * std::tan(osg::DegreesToRadians(kFovY / 2)));
+}
+
+// Default path: from just outside the bounding sphere to where the model is 16 pixels
+// tall, or past the last LOD switch if that comes first.
+void choosePath(Options& o, const std::vector<Level>& levels, double radius)
+{
+    if (o.nearDistance <= 0)
+        o.nearDistance = 1.5 * radius;
+    if (o.farDistance <= 0) {
+        o.farDistance = distanceForHeight(o, radius, 16);
+        const double lastSwitch = farthestRange(levels, radius);
+        if (lastSwitch > o.nearDistance)
+            o.farDistance = std::min(o.farDistance, 1.25 * lastSwitch);
+    }
+    if (o.farDistance <= o.nearDistance)
+        o.farDistance = 2 * o.nearDistance;
+}
+
+// Frame i of n: one full orbit while the distance grows geometrically from near to far.
+double pathDistance(const Options& o, int i)
+{
+    const double t = double(i) / (o.frames - 1);
+    return o.nearDistance * std::pow(o.farDistance / o.nearDistance, t);
+}
+
+int levelAt(const std::vector<Level>& levels, double distance)
+{
+    for (std::size_t k = 0; k < levels.size(); ++k)
+        if (levels[k].nearRange <= distance && distance < levels[k].farRange)
+            return int(k);
+    return -1;
+}
+
+int measureFrameRate(Options& o, osg::Node* model, const osg::BoundingSphere& bs, const std::vector<Level>& levels)
+{
+    choosePath(o, levels, bs.radius());
+    osg::ref_ptr<osgViewer::Viewer> viewer = makeViewer(o, model);
+    for (int i = 0; i < 5; ++i) {  // first frames compile display lists and shaders
+        lookAt(*viewer, bs.center(), o.upAxis, pathDistance(o, i * (o.frames - 1) / 4), 0, o.elevation);
+        viewer->frame();
+    }
+    std::vector<int> framesAtLevel(levels.size() + 1, 0);
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < o.frames; ++i) {
+        const double d = pathDistance(o, i);
+        lookAt(*viewer, bs.center(), o.upAxis, d, 360.0 * i / o.frames, o.elevation);
+        viewer->frame();
+        if (o.level < 0 && !levels.empty())
+            ++framesAtLevel[std::size_t(levelAt(levels, d) + 1)];
+    }
+    const double seconds = secondsSince(start);
+    std::printf("path_near %.6g\npath_far %.6g\nframes %d\nrender_seconds %.4f\nfps %.2f\n", o.nearDistance,
+                o.farDistance, o.frames, seconds, o.frames / seconds);
+    if (o.level < 0)
+        for (std::size_t k = 0; k < levels.size(); ++k)
+            std::printf("frames_at_level %zu %d\n", k, framesAtLevel[k + 1]);
+    std::printf("peak_rss_kb %.0f\n", peakRssKb());
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    Options o = parseOptions(argc, argv);
+    double loadSeconds = 0;
+    osg::ref_ptr<osg::Node> model = loadTimed(o.model, loadSeconds);
+    if (!model) {
+        std::fprintf(stderr, "osg_render: OpenSceneGraph cannot read %s\n", o.model.c_str());
+        return 1;
+    }
+    std::printf("model %s\nload_seconds %.4f\npeak_rss_after_load_kb %.0f\n", o.model.c_str(), loadSeconds,
+                peakRssKb());
+
+    std::vector<Level> levels = findLevels(*model);
+    std::printf("triangles %zu\nlod_levels %zu\n", trianglesBelow(*model), levels.size());
+    for (std::size_t k = 0; k < levels.size(); ++k)
+        std::printf("level %zu triangles %zu range %.6g %.6g\n", k, levels[k].triangles, levels[k].nearRange,
+                    levels[k].farRange);
+    if (o.level >= 0)
+        pinLevel(levels, o.level);
+    if (o.creaseAngle >= 0)
+        recomputeNormals(*model, o.creaseAngle);
+
+    osg::ComputeBoundsVisitor bounds;
+    model->accept(bounds);
+    const osg::BoundingBox& box = bounds.getBoundingBox();
+    const osg::BoundingSphere bs(box.center(), box.radius());
+    std::printf("radius %.6g\n", bs.radius());
+    std::fflush(stdout);
+    if (!box.valid()) {
+        std::fprintf(stderr, "osg_render: %s has no geometry\n", o.model.c_str());
+        return 1;
+    }
+    if (!o.render)
+        return 0;
+    return o.shot.empty() ? measureFrameRate(o, model.get(), bs, levels) : writeShot(o, model.get(), box);
+}
