@@ -1,12 +1,13 @@
 #include "filter_cadlod.h"
 
 #include "core/compactness.h"
+#include "lod_set_filter.h"
 
 #include <vcg/complex/algorithms/stat.h>
 
 FilterCadLodPlugin::FilterCadLodPlugin()
 {
-    typeList << FP_COMPACTNESS;
+    typeList << FP_COMPACTNESS << FP_LOD_SET;
     for (FilterIDType t : types())
         actionList << new QAction(filterName(t), this);
 }
@@ -17,6 +18,7 @@ QString FilterCadLodPlugin::filterName(FilterIDType filter) const
 {
     switch (filter) {
     case FP_COMPACTNESS: return "Compute Triangle Compactness";
+    case FP_LOD_SET: return "Generate CAD LOD Set";
     }
     return {};
 }
@@ -30,6 +32,14 @@ QString FilterCadLodPlugin::filterInfo(FilterIDType filter) const
                "triangle, towards 0 for slivers, 0 for zero-area faces (Gu&eacute;ziec). "
                "Use the quality mapper or the face quality histogram to see where slivers are. "
                "The log reports mean, min, 5th percentile and the share of faces below 0.1 and 0.3.";
+    case FP_LOD_SET:
+        return "Builds levels of detail of the current layer with the CAD Quadric Edge Collapse: "
+               "one new layer per level (by default 50, 60, 70, 80 and 90 % fewer faces, as Tang "
+               "et al.), each measured against the original (symmetric Hausdorff distance) and "
+               "given OpenFlight switch distances: a level is switched in where its error projects "
+               "to fewer pixels than the pixel error for the given camera. Saving any layer of the "
+               "set as OpenFlight (.flt) writes the whole set as one LOD model. The log prints a "
+               "table of the levels.";
     }
     return {};
 }
@@ -38,6 +48,7 @@ MeshFilterInterface::FilterClass FilterCadLodPlugin::getClass(QAction* action)
 {
     switch (ID(action)) {
     case FP_COMPACTNESS: return FilterClass(Quality | Measure);
+    case FP_LOD_SET: return Remeshing;
     }
     return Measure;
 }
@@ -51,6 +62,7 @@ int FilterCadLodPlugin::getRequirements(QAction* action)
 {
     switch (ID(action)) {
     case FP_COMPACTNESS: return MeshModel::MM_FACEQUALITY;
+    case FP_LOD_SET: return MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK;
     }
     return MeshModel::MM_NONE;
 }
@@ -59,6 +71,7 @@ int FilterCadLodPlugin::getPreConditions(QAction* action) const
 {
     switch (ID(action)) {
     case FP_COMPACTNESS: return MeshModel::MM_FACENUMBER;
+    case FP_LOD_SET: return MeshModel::MM_FACENUMBER;
     }
     return MeshModel::MM_NONE;
 }
@@ -67,17 +80,24 @@ int FilterCadLodPlugin::postCondition(QAction* action) const
 {
     switch (ID(action)) {
     case FP_COMPACTNESS: return MeshModel::MM_FACEQUALITY;
+    case FP_LOD_SET: return MeshModel::MM_NONE;  // the original is not changed; levels are new layers
     }
     return MeshModel::MM_ALL;
 }
 
-void FilterCadLodPlugin::initParameterSet(QAction*, MeshModel&, RichParameterList&) {}
+void FilterCadLodPlugin::initParameterSet(QAction* action, MeshModel& m, RichParameterList& parlst)
+{
+    switch (ID(action)) {
+    case FP_LOD_SET: cadlod::lodSetParameters(m, parlst); break;
+    }
+}
 
-bool FilterCadLodPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList&,
+bool FilterCadLodPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& par,
                                      vcg::CallBackPos* cb)
 {
     switch (ID(action)) {
     case FP_COMPACTNESS: return computeCompactness(*md.mm(), cb);
+    case FP_LOD_SET: return cadlod::generateLodSet(*this, md, par, cb, errorMessage);
     }
     errorMessage = "Unknown filter";
     return false;
