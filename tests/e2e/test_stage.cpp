@@ -32,3 +32,38 @@ TEST(Stage, FilterDumpListsCadlodFilters)
     // MeshLab's own filters load beside ours.
     EXPECT_NE(text.find("Quadric Edge Collapse Decimation"), std::string::npos);
 }
+
+TEST(MlxComplete, FillsEveryParameterInTheFiltersOrder)
+{
+    const std::string dir = scratchDir("mlx_complete");
+    writeText(dir + "/partial.mlx",
+              mlxScript({mlxFilter("Generate CAD LOD Set", {mlxParam("RichString", "levels", "50 90")})}));
+    const ServerRun run = completeMlx(dir + "/partial.mlx", dir + "/full.mlx");
+    ASSERT_TRUE(run.ok()) << run.output;
+    const std::string full = readText(dir + "/full.mlx");
+    const std::size_t levels = full.find("name=\"levels\"");
+    const std::size_t unit = full.find("name=\"levelUnit\"");
+    const std::size_t tie = full.find("name=\"tieTolerance\"");
+    ASSERT_NE(levels, std::string::npos) << full;
+    ASSERT_NE(unit, std::string::npos) << full;
+    ASSERT_NE(tie, std::string::npos) << full;
+    EXPECT_LT(levels, unit);
+    EXPECT_LT(unit, tie);
+    EXPECT_NE(full.find("value=\"50 90\""), std::string::npos) << full;
+}
+
+TEST(MlxComplete, UnknownFilterOrParameterIsAClearError)
+{
+    const std::string dir = scratchDir("mlx_complete");
+    writeText(dir + "/typo.mlx",
+              mlxScript({mlxFilter("Generate CAD LOD Set", {mlxParam("RichString", "levles", "50")})}));
+    ServerRun run = completeMlx(dir + "/typo.mlx", dir + "/typo.full.mlx");
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.output.find("has no parameter \"levles\""), std::string::npos) << run.output;
+    EXPECT_NE(run.output.find("levels"), std::string::npos) << run.output;
+
+    writeText(dir + "/nofilter.mlx", mlxScript({mlxFilter("No Such Filter")}));
+    run = completeMlx(dir + "/nofilter.mlx", dir + "/nofilter.full.mlx");
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.output.find("no filter named \"No Such Filter\""), std::string::npos) << run.output;
+}

@@ -32,33 +32,62 @@ std::string xvfbDisplay()
     return display;
 }
 
-}  // namespace
-
-ServerRun runMeshlabServer(const std::vector<std::string>& args, int timeoutSeconds)
+std::string environmentPrefix()
 {
-    const std::string dir = scratchDir("meshlabserver-runs");
-    static int counter = 0;
-    // ctest runs test processes in parallel: the pid keeps their files apart.
-    const std::string logFile =
-        dir + "/run-" + std::to_string(getpid()) + "-" + std::to_string(++counter) + ".log";
-    const std::string outFile = logFile + ".out";
-
-    std::ostringstream cmd;
-    cmd << "DISPLAY=" << shellQuote(xvfbDisplay());
+    std::string env = "DISPLAY=" + shellQuote(xvfbDisplay());
     if (*CADLOD_SANITIZER_PRELOAD)
-        cmd << " LD_PRELOAD=" << shellQuote(CADLOD_SANITIZER_PRELOAD);
-    cmd << " timeout -k 5 " << timeoutSeconds << " "
-        << shellQuote(CADLOD_STAGE_MESHLABSERVER) << " -l " << shellQuote(logFile);
-    for (const std::string& a : args)
-        cmd << ' ' << shellQuote(a);
-    cmd << " >" << shellQuote(outFile) << " 2>&1";
+        env += " LD_PRELOAD=" + shellQuote(CADLOD_SANITIZER_PRELOAD);
+    return env;
+}
 
+ServerRun runCommand(const std::string& command, const std::string& logFile, int timeoutSeconds)
+{
+    const std::string outFile = logFile + ".out";
+    const std::string cmd = environmentPrefix() + " timeout -k 5 " + std::to_string(timeoutSeconds) + " " +
+                            command + " >" + shellQuote(outFile) + " 2>&1";
     ServerRun run;
-    const int status = std::system(cmd.str().c_str());
+    const int status = std::system(cmd.c_str());
     run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     run.timedOut = run.exitCode == 124 || run.exitCode == 137;
     run.output = readText(outFile) + readText(logFile);
     return run;
+}
+
+// A fresh base name for this process's next run (ctest runs test processes in parallel).
+std::string nextRunBase()
+{
+    static int counter = 0;
+    return scratchDir("meshlabserver-runs") + "/run-" + std::to_string(getpid()) + "-" +
+           std::to_string(++counter);
+}
+
+}  // namespace
+
+ServerRun completeMlx(const std::string& script, const std::string& completed)
+{
+    const std::string base = nextRunBase();
+    return runCommand(shellQuote(CADLOD_MLX_COMPLETE) + " " + shellQuote(CADLOD_STAGE_PLUGIN_DIR) + " " +
+                          shellQuote(script) + " " + shellQuote(completed),
+                      base + ".log", 60);
+}
+
+ServerRun runMeshlabServer(const std::vector<std::string>& args, int timeoutSeconds)
+{
+    std::string command = shellQuote(CADLOD_STAGE_MESHLABSERVER);
+    const std::string base = nextRunBase();
+    command += " -l " + shellQuote(base + ".log");
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        std::string arg = args[i];
+        if (i > 0 && args[i - 1] == "-s") {
+            const std::string completed = base + "-script" + std::to_string(i) + ".mlx";
+            ServerRun completion = completeMlx(arg, completed);
+            if (!completion.ok())
+                return completion;
+            arg = completed;
+        }
+        command += " " + shellQuote(arg);
+    }
+    return runCommand(command, base + ".log", timeoutSeconds);
 }
 
 std::string scratchDir(const std::string& testName)

@@ -16,7 +16,12 @@ struct ServerRun {
 };
 
 // Arguments as meshlabserver takes them, e.g. {"-i", in, "-o", out, "-m", "fq", "-s", mlx}.
+// Scripts may name only the parameters they change: each -s script is first completed with
+// cadlod_mlx_complete (meshlabserver 2020.09 needs every parameter, in order).
 ServerRun runMeshlabServer(const std::vector<std::string>& args, int timeoutSeconds = 120);
+
+// Writes the complete form of `script` (every parameter of every filter) to `completed`.
+ServerRun completeMlx(const std::string& script, const std::string& completed);
 
 // A fresh directory for one test's files, under the build tree.
 std::string scratchDir(const std::string& testName);
