@@ -30,8 +30,8 @@ const std::set<std::string>& ignoredNodeTypes()
 {
     static const std::set<std::string> types{"Info", "PerspectiveCamera", "OrthographicCamera", "DirectionalLight",
                                              "PointLight", "SpotLight", "Texture2", "Texture2Transform", "FontStyle",
-                                             "AsciiText", "WWWAnchor_", "Label", "Complexity", "DrawStyle",
-                                             "LightModel", "Environment", "ShapeHints_", "Units"};
+                                             "AsciiText", "Label", "Complexity", "DrawStyle", "LightModel",
+                                             "Environment", "Units"};
     return types;
 }
 

@@ -21,15 +21,14 @@ const std::set<std::string>& ignoredNodeTypes()
         "NormalInterpolator", "MovieTexture", "ImageTexture", "PixelTexture", "TextureTransform",
         "KeySensor", "StringSensor", "BooleanFilter", "BooleanSequencer", "BooleanToggle", "BooleanTrigger",
         "IntegerSequencer", "IntegerTrigger", "TimeTrigger", "OrthoViewpoint", "EnvironmentLight",
-        "X3DPrototypeInstance", "MetadataString", "MetadataFloat", "MetadataInteger", "MetadataSet",
-        "MetadataDouble", "MetadataBoolean", "LogicalNodes", "ColorRGBA"};
+        "MetadataString", "MetadataFloat", "MetadataInteger", "MetadataSet", "MetadataDouble", "MetadataBoolean"};
     return types;
 }
 
 const std::set<std::string>& groupNodeTypes()
 {
     static const std::set<std::string> types{"Group", "Billboard", "Anchor", "Collision", "StaticGroup",
-                                             "CADAssembly", "CADLayer", "CADFace", "KambiInline"};
+                                             "CADAssembly", "CADLayer", "CADFace"};
     return types;
 }
 

@@ -9,9 +9,12 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <regex>
+
+#include <unistd.h>
 
 namespace fs = std::filesystem;
 using namespace cadlod::vrml;
@@ -70,6 +73,65 @@ std::vector<fs::path> corpusFiles()
 }
 
 }  // namespace
+
+// Small files in the styles of real CAD exporters (design.md §6), written by the test.
+const std::map<std::string, std::string> kExporterStyles{
+    {"kicad_style.wrl", R"(#VRML V2.0 utf8
+Shape { appearance Appearance { material DEF PIN-01 Material { diffuseColor 0.8 0.8 0.8 } } geometry IndexedFaceSet { creaseAngle 0.5 coord Coordinate { point [0 0 0,1 0 0,1 1 0,0 1 0,0 0 1,1 0 1,1 1 1,0 1 1] } coordIndex [0,1,2,-1,0,2,3,-1,4,6,5,-1,4,7,6,-1,0,4,5,1,-1,3,2,6,7,-1] } }
+Shape { appearance Appearance { material USE PIN-01 } geometry IndexedFaceSet { coord Coordinate { point [2 0 0,3 0 0,3 1 0] } coordIndex [0,1,2,-1] } }
+Shape { appearance Appearance { material DEF PIN-01 Material { diffuseColor 0.1 0.1 0.1 } } geometry IndexedFaceSet { coord Coordinate { point [4 0 0,5 0 0,5 1 0,4.5 0.5 0,4 1 0] } convex FALSE coordIndex [0,1,2,3,4,-1] } }
+)"},
+    {"catia_style.wrl", R"(#VRML V2.0 utf8
+DEF Part1 Transform { rotation 0 1 0 0.5 children [
+  DEF _Face1 Shape { geometry IndexedFaceSet { coord DEF _C1 Coordinate { point [ 0 0 0, 10 0 0, 10 10 0, 0 10 0, 0 0 10, 10 0 10 ] }
+    normal Normal { vector [ 0 0 -1 ] } normalPerVertex FALSE normalIndex [ 0 0 ] coordIndex [ 0 2 1 -1 0 3 2 -1 ] } }
+  DEF _Face2 Shape { geometry IndexedFaceSet { coord USE _C1 coordIndex [ 0 1 5 4 -1 ] solid FALSE } }
+  Shape { geometry IndexedFaceSet { coord USE _C1 coordIndex [ 0 4 3 -1 1 2 5 -1 ] ccw FALSE } }
+] }
+)"},
+    {"proe_style.wrl", R"(#VRML V2.0 utf8
+Group { children [
+  LOD { range [ 100 ] level [
+    Transform { scale 0.001 0.001 0.001 children Shape { geometry IndexedFaceSet {
+      coord Coordinate { point [ 0 0 0, 100 0 0, 100 100 0, 0 100 0 ] } coordIndex [ 0 1 2 3 -1 ] } } }
+    Shape { geometry Box { } } ] }
+  Switch { whichChoice 0 choice [ Shape { geometry ElevationGrid { xDimension 3 zDimension 3 height [ 0 1 0 1 2 1 0 1 0 ] } } ] }
+] }
+)"},
+    {"solidworks_style.wrl", R"(#VRML V1.0 ascii
+Separator {
+  ShapeHints { vertexOrdering COUNTERCLOCKWISE shapeType SOLID faceType UNKNOWN_FACE_TYPE creaseAngle 0.5 }
+  Separator {
+    Material { diffuseColor [ 0.7 0.7 0.7, 0.9 0.1 0.1, 0.1 0.1 0.9 ] }
+    MaterialBinding { value PER_FACE_INDEXED }
+    Coordinate3 { point [ 0 0 0, 2 0 0, 2 1 0, 1 1 0, 1 2 0, 0 2 0, 0 0 1, 2 0 1 ] }
+    Normal { vector [ 0 0 1 ] }
+    NormalBinding { value OVERALL }
+    IndexedFaceSet { coordIndex [ 0, 1, 2, 3, 4, 5, -1, 0, 6, 7, 1, -1 ] materialIndex [ 1, 2 ] }
+  }
+  TransformSeparator { MatrixTransform { matrix 1 0 0 0 0 1 0 0 0 0 1 0 5 0 0 1 } Cube { } }
+}
+)"},
+};
+
+TEST(VrmlCoinConformance, ExporterStyleFilesMatchCoin)
+{
+    const fs::path dir = fs::temp_directory_path() / ("cadlod_coin_styles_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    for (const auto& [name, text] : kExporterStyles) {
+        SCOPED_TRACE(name);
+        const fs::path file = dir / name;
+        std::ofstream(file) << text;
+        const ImportResult ours = importVrmlFile(file.string());
+        ASSERT_TRUE(ours.ok()) << ours.error;
+        EXPECT_EQ(ours.scene.diagnostics.total(), 0);
+        const CoinCount coin = runCoin(file);
+        ASSERT_TRUE(coin.read) << coin.output;
+        EXPECT_GT(coin.mesh, 0);
+        EXPECT_EQ(long(ours.scene.stats.meshTriangles), coin.mesh);
+    }
+    fs::remove_all(dir);
+}
 
 TEST(VrmlCoinConformance, EveryCorpusFileImportsAndMeshTrianglesMatchCoin)
 {
