@@ -39,6 +39,7 @@ namespace cadlod {
 struct RingFace {
     vcg::Point3d a, b;
     vcg::Point3d normal;  // before the collapse, not normalised (zero for zero-area faces)
+    vcg::Point3f original;  // unit normal the face had in the input (zero if none)
 };
 
 struct PlacementScore {
@@ -63,6 +64,26 @@ struct CollapseContext : public vcg::BaseParameterClass {
     double cosNormalLimit = -1.0;
     double largestError = 0.0;    // over executed collapses
     std::vector<RingFace> ring;   // scratch of the edge being evaluated
+    std::vector<vcg::Point3f> inputNormal;  // per face index: unit normal in the input
+    const typename MeshType::FaceType* faceBase = nullptr;
+
+    // Faces keep their identity through collapses (only a vertex is replaced), so the input
+    // normal bounds the rotation a face accumulates over many collapses.
+    void storeInputNormals(MeshType& m)
+    {
+        faceBase = m.face.empty() ? nullptr : &m.face[0];
+        inputNormal.assign(m.face.size(), vcg::Point3f(0, 0, 0));
+        for (std::size_t i = 0; i < m.face.size(); ++i) {
+            const auto& f = m.face[i];
+            if (f.IsD())
+                continue;
+            vcg::Point3d n = (vcg::Point3d::Construct(f.cP(1)) - vcg::Point3d::Construct(f.cP(0))) ^
+                             (vcg::Point3d::Construct(f.cP(2)) - vcg::Point3d::Construct(f.cP(0)));
+            const double len = n.Norm();
+            if (len > 0 && std::isfinite(len))
+                inputNormal[i] = vcg::Point3f::Construct(n / len);
+        }
+    }
 };
 
 // Cheapest point of a quadric, when its matrix is well conditioned (scale-free test).
@@ -142,8 +163,7 @@ public:
             if (f->V((z + 1) % 3) != v1 && f->V((z + 2) % 3) != v1)
                 continue;
             const int apexIndex = f->V((z + 1) % 3) == v1 ? (z + 2) % 3 : (z + 1) % 3;
-            if (f->IsUserBit(ctx.bits.edge[(apexIndex + 1) % 3]) ||
-                f->IsUserBit(ctx.bits.edge[(apexIndex + 2) % 3]))
+            if (f->IsUserBit(ctx.bits.edge[apexIndex]) || f->IsUserBit(ctx.bits.edge[(apexIndex + 2) % 3]))
                 featureApex.push_back(f->V(apexIndex));
         }
         ctx.quadrics.merge(v0, v1);
@@ -266,7 +286,7 @@ private:
                     const vcg::Point3d pa = vcg::Point3d::Construct(a->cP());
                     const vcg::Point3d pb = vcg::Point3d::Construct(b->cP());
                     const vcg::Point3d pv = vcg::Point3d::Construct(v->cP());
-                    ctx.ring.push_back({pa, pb, (pa - pv) ^ (pb - pv)});
+                    ctx.ring.push_back({pa, pb, (pa - pv) ^ (pb - pv), ctx.inputNormal[f - ctx.faceBase]});
                 }
                 n.worstCompactness = std::min(n.worstCompactness, compactness(f->cP(0), f->cP(1), f->cP(2)));
             }
@@ -287,6 +307,10 @@ private:
                     s.flipped = true;
                     return s;
                 }
+            }
+            if (ctx.params.normalCheck && ((f.a - p) ^ (f.b - p)) * vcg::Point3d::Construct(f.original) < 0) {
+                s.flipped = true;  // turned away from the input surface
+                return s;
             }
             const double c = compactness(p, f.a, f.b);
             sum += c;
@@ -318,25 +342,34 @@ private:
         const vcg::Point3d p0 = vcg::Point3d::Construct(v0->cP());
         const vcg::Point3d p1 = vcg::Point3d::Construct(v1->cP());
 
-        struct Candidate { vcg::Point3d p; double cost; };
+        struct Candidate { vcg::Point3d p; double cost; bool onlyIfFlat; };
         Candidate cand[32];
         int count = 0;
         const int interior = std::clamp(ctx.params.candidatesPerEdge, 0, 28);
-        cand[count++] = {p0, 0.0};
-        cand[count++] = {p1, 0.0};
+        // A vertex on a feature keeps its place (or takes the other feature vertex's):
+        // other candidates must cost no more than the flat floor, i.e. lie on the feature
+        // already (a straight crease), so boundaries and creases only lose chord detail.
+        const bool anyFeature = n.v0OnFeature || n.v1OnFeature;
+        cand[count++] = {p0, 0.0, n.v1OnFeature && !n.v0OnFeature};
+        cand[count++] = {p1, 0.0, n.v0OnFeature && !n.v1OnFeature};
         for (int i = 1; i <= interior; ++i)
-            cand[count++] = {p0 + (p1 - p0) * (double(i) / (interior + 1)), 0.0};
+            cand[count++] = {p0 + (p1 - p0) * (double(i) / (interior + 1)), 0.0, anyFeature};
         vcg::Point3d optimum;
-        const double edgeLength = vcg::Distance(p0, p1);
         if (ctx.params.optimalPlacement && quadricMinimum(q, optimum) &&
-            vcg::Distance(optimum, (p0 + p1) * 0.5) <= edgeLength)
-            cand[count++] = {optimum, 0.0};
+            vcg::Distance(optimum, (p0 + p1) * 0.5) <= vcg::Distance(p0, p1))
+            cand[count++] = {optimum, 0.0, anyFeature};
+        const double flatFloor = area * ctx.flatError2;
         double minCost = std::numeric_limits<double>::max();
+        int kept = 0;
         for (int i = 0; i < count; ++i) {
             cand[i].cost = applyQuadric(q, cand[i].p);
+            if (cand[i].onlyIfFlat && cand[i].cost > flatFloor)
+                continue;
+            cand[kept++] = cand[i];
             minCost = std::min(minCost, cand[i].cost);
         }
-        const double tieLimit = minCost * (1.0 + ctx.params.tieTolerance) + area * ctx.flatError2;
+        count = kept;
+        const double tieLimit = minCost * (1.0 + ctx.params.tieTolerance) + flatFloor;
 
         int best = -1;
         PlacementScore bestScore;
@@ -376,7 +409,9 @@ private:
         // mean compactness of the chosen placement) lets well-shaped collapses go first.
         const double qualityThr = ctx.params.qualityThreshold;
         const double shape = qualityThr > 0 ? std::clamp(bestScore.meanCompactness / qualityThr, 0.02, 1.0) : 1.0;
-        this->_priority = ScalarType((cost + area * ctx.flatError2) * ctx.invDiagonal4 / shape);
+        const double diag2 = ctx.diagonal * ctx.diagonal;
+        const double meanSquaredDistance = area > 0 ? cost / area : cost / diag2;
+        this->_priority = ScalarType((meanSquaredDistance + ctx.flatError2 * area / diag2) / (diag2 * shape));
     }
 
     vcg::Point3<ScalarType> target_;

@@ -144,6 +144,7 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
         weights.planar = params.planarQuadric ? 1e-3 : 0.0;
         ctx.quadrics.init(m, weights, [&](FaceType& f, int j) { return f.IsUserBit(ctx.bits.edge[j]); });
 
+        ctx.storeInputNormals(m);
         std::vector<VertexType*> frozen;
         if (params.selectedOnly)
             frozen = detail::freezeUnselected(m);

@@ -196,7 +196,7 @@ inline void assembly(CadBuilder& b, int segments)
         RevolveSpec s;
         s.segments = std::max(8, segments / 2);
         const int first = revolve(b, {{0, 0}, {0, 7}, {5, 7}, {5, 4}, {30, 4}, {30.5, 3.5}, {30.5, 0}}, s);
-        b.translate(first, 20 + 60 * bolt, 20, -28);
+        b.translate(first, 20 + 60 * bolt, 25, 0);
     }
 }
 

@@ -30,7 +30,8 @@ TEST(SimplifyStop, ReachesTargetFacesOnOpenTube)
     const int before = m.fn;
     const SimplifyStats s = simplify(m, targetParams(before / 4));
     ASSERT_TRUE(s.ok) << s.message;
-    EXPECT_NEAR(m.fn, before / 4, 2) << s.message;
+    EXPECT_NEAR(m.fn, before / 4, 2) << s.message << " flip " << s.rejectedFlip << " shape " << s.rejectedCompactness
+                                     << " feature " << s.rejectedFeature << " topo " << s.rejectedTopology;
     EXPECT_GT(s.boundaryEdges, 0);
 }
 

@@ -1,0 +1,199 @@
+// CAD protection: boundaries stay on the boundary polyline, creases stay sharp and in
+// place, no folded faces, part borders kept.
+#include "mesh_checks.h"
+#include "simplify_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <vcg/space/segment3.h>
+
+using namespace cadlod;
+using namespace cadlod::test;
+
+namespace {
+
+using Segment = vcg::Segment3<double>;
+
+double distanceToSegments(const vcg::Point3d& p, const std::vector<Segment>& segments)
+{
+    double best = std::numeric_limits<double>::max();
+    for (const Segment& s : segments) {
+        vcg::Point3d closest;
+        double d;
+        vcg::SegmentPointDistance(s, p, closest, d);
+        best = std::min(best, d);
+    }
+    return best;
+}
+
+vcg::Point3d at(const TestMesh& m, int i) { return vcg::Point3d::Construct(m.vert[i].cP()); }
+
+std::vector<Segment> boundarySegments(const TestMesh& m)
+{
+    std::vector<Segment> s;
+    for (const auto& e : edgeUse(m))
+        if (e.second == 1)
+            s.emplace_back(at(m, e.first.first), at(m, e.first.second));
+    return s;
+}
+
+// Edges whose two faces meet at more than `angleDeg`.
+std::vector<Segment> creaseSegments(TestMesh& m, double angleDeg)
+{
+    struct HalfEdge { int a, b; vcg::Point3d n; };
+    std::vector<HalfEdge> half;
+    for (auto& f : m.face)
+        if (!f.IsD())
+            for (int j = 0; j < 3; ++j) {
+                const int a = int(f.V(j) - &m.vert[0]), b = int(f.V((j + 1) % 3) - &m.vert[0]);
+                half.push_back({std::min(a, b), std::max(a, b), unitNormal(f)});
+            }
+    std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
+        return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
+    });
+    std::vector<Segment> creases;
+    const double cosLimit = std::cos(angleDeg * M_PI / 180);
+    for (std::size_t i = 0; i + 1 < half.size(); ++i)
+        if (half[i].a == half[i + 1].a && half[i].b == half[i + 1].b && half[i].n * half[i + 1].n < cosLimit)
+            creases.emplace_back(at(m, half[i].a), at(m, half[i].b));
+    return creases;
+}
+
+double totalLength(const std::vector<Segment>& segments)
+{
+    double sum = 0;
+    for (const Segment& s : segments)
+        sum += s.Length();
+    return sum;
+}
+
+}  // namespace
+
+TEST(SimplifyProtection, BoundaryVerticesStayOnTheBoundaryPolyline)
+{
+    TestMesh original, m;
+    makeTube(original, 200, 4);
+    copyMesh(m, original);
+    const std::vector<Segment> before = boundarySegments(original);
+    ASSERT_EQ(before.size(), 400u);
+    const SimplifyStats s = simplify(m, targetParams(original.fn / 4));
+    ASSERT_TRUE(s.ok) << s.message;
+    ASSERT_NEAR(m.fn, original.fn / 4, 2) << s.message << " flip " << s.rejectedFlip << " shape "
+                                          << s.rejectedCompactness << " feature " << s.rejectedFeature << " topo "
+                                          << s.rejectedTopology;
+    const std::vector<Segment> after = boundarySegments(m);
+    ASSERT_FALSE(after.empty());
+    const double tolerance = 1e-5 * original.bbox.Diag();
+    for (const Segment& seg : after) {
+        EXPECT_LE(distanceToSegments(seg.P0(), before), tolerance);
+        EXPECT_LE(distanceToSegments(seg.P1(), before), tolerance);
+    }
+    // The two circles are still closed loops (every boundary vertex has two boundary edges).
+    std::map<vcg::Point3d, int> degree;
+    for (const Segment& seg : after) {
+        ++degree[seg.P0()];
+        ++degree[seg.P1()];
+    }
+    for (const auto& d : degree)
+        EXPECT_EQ(d.second, 2);
+}
+
+TEST(SimplifyProtection, StraightCreasesStayExactlyInPlace)
+{
+    TestMesh original, m;
+    CadBuilder b;
+    stripPlate(b, 100, 40, 5, 100);
+    b.build(original);
+    copyMesh(m, original);
+    const std::vector<Segment> before = creaseSegments(original, 30);
+    const SimplifyStats s = simplify(m, targetParams(original.fn / 10));
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_GT(s.featureEdges, 0);
+    const std::vector<Segment> after = creaseSegments(m, 30);
+    const double diag = original.bbox.Diag();
+    for (const Segment& seg : after) {
+        EXPECT_LE(distanceToSegments(seg.P0(), before), 1e-6 * diag);
+        EXPECT_LE(distanceToSegments(seg.P1(), before), 1e-6 * diag);
+    }
+    EXPECT_NEAR(totalLength(after), totalLength(before), 1e-5 * totalLength(before));  // the 12 box edges
+}
+
+TEST(SimplifyProtection, CurvedCreasesStaySharpAndClose)
+{
+    TestMesh original, m;
+    makeShaft(original, 256);
+    copyMesh(m, original);
+    const std::vector<Segment> before = creaseSegments(original, 30);
+    const SimplifyStats s = simplify(m, targetParams(original.fn / 4));
+    ASSERT_TRUE(s.ok) << s.message;
+    const std::vector<Segment> after = creaseSegments(m, 30);
+    const double diag = original.bbox.Diag();
+    // Merging segments of a circle shortens it by the chord error only.
+    EXPECT_NEAR(totalLength(after), totalLength(before), 0.01 * totalLength(before));
+    for (const Segment& seg : after)
+        EXPECT_LE(distanceToSegments(seg.MidPoint(), before), 2e-3 * diag);
+    for (const Segment& seg : before)
+        EXPECT_LE(distanceToSegments(seg.MidPoint(), after), 2e-3 * diag);
+}
+
+TEST(SimplifyProtection, NoFoldedFacesUnderAggressiveReduction)
+{
+    for (int variant = 0; variant < 2; ++variant) {
+        TestMesh original, m;
+        CadBuilder b;
+        if (variant == 0)
+            revolve(b, shaftProfile(), shaftSpec(300, 3));
+        else
+            assembly(b, 200);
+        b.build(original, variant == 1);
+        copyMesh(m, original);
+        const SimplifyStats s = simplify(m, targetParams(original.fn / 10));
+        ASSERT_TRUE(s.ok) << s.message;
+        EXPECT_EQ(foldedFaces(m, original, 60.0), 0) << "variant " << variant;
+        EXPECT_EQ(nonManifoldEdges(m), 0) << "variant " << variant;
+    }
+}
+
+TEST(SimplifyProtection, PartBordersAreKept)
+{
+    // Two coplanar parts sharing a straight border: the border must stay a straight line
+    // at its place although the plane itself is free to simplify.
+    CadBuilder b;
+    const int n = 40;
+    std::vector<int> grid((n + 1) * (n + 1));
+    for (int y = 0; y <= n; ++y)
+        for (int x = 0; x <= n; ++x)
+            grid[y * (n + 1) + x] = b.addPoint(x, y + 0.3 * std::sin(x * 1.7), 0);  // wavy rows
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            b.currentPart = x < n / 2 ? 0 : 1;
+            const int a = grid[y * (n + 1) + x], c = grid[(y + 1) * (n + 1) + x + 1];
+            b.addTriangle(a, grid[y * (n + 1) + x + 1], c);
+            b.addTriangle(a, c, grid[(y + 1) * (n + 1) + x]);
+        }
+    TestMesh m;
+    b.build(m, true);
+    const SimplifyStats s = simplify(m, targetParams(m.fn / 10));
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_GE(s.featureEdges, n);  // the border column
+    auto part = cadlod::facePartHandle(m);
+    int borderEdges = 0;
+    for (auto& f : m.face) {
+        if (f.IsD())
+            continue;
+        for (int j = 0; j < 3; ++j) {
+            auto* g = f.FFp(j);
+            (void)g;
+        }
+        // Every face lies wholly on its part's side of the border x = n/2.
+        for (int j = 0; j < 3; ++j) {
+            const double x = f.cP(j)[0];
+            if (part[f] == 0)
+                EXPECT_LE(x, n / 2 + 1e-4);
+            else
+                EXPECT_GE(x, n / 2 - 1e-4);
+            borderEdges += std::abs(x - n / 2) < 1e-4;
+        }
+    }
+    EXPECT_GT(borderEdges, 0);
+}
