@@ -3,8 +3,8 @@
 exporters do it: cylinders as long thin strips running the full length of a feature,
 flat ends and steps as fans and rings. Units are millimetres, as a CAD export keeps them.
 
-  shaft.wrl            a stepped shaft with chamfers (~23.7k triangles, the paper's Fig. 6 part)
-  cad_assembly.wrl.gz  shaft + two bearing housings + four bolts + base plate (~47.5k
+  shaft.wrl            a stepped shaft with chamfers (23,716 triangles, as the paper's Fig. 6 part)
+  cad_assembly.wrl.gz  shaft + two bearing housings + four bolts + base plate (47,512
                        triangles, the paper's Table 1 assembly), VRML97, gzip, one Transform
                        per part, DEF/USE for the shared housing, bolt and materials.
 Deterministic: the same files every run.
@@ -62,8 +62,9 @@ def stepped_shaft(n):
         z_end = z + length
         if k > 0:
             prev_r = sections[k - 1][0]
-            profile.append((prev_r, z))          # step ring at the old radius
-            profile.append((r, z))               # ... and the new one (flat annulus)
+            # the previous section ended with a ring at (prev_r, z): the step is a flat
+            # annulus from there to the new radius
+            profile.append((r, z))
             if r > prev_r:
                 profile[-1] = (r - chamfer, z)
                 profile.append((r, z + chamfer))
@@ -149,7 +150,7 @@ def part(name, translation, rotation, body):
 
 
 def write_shaft(path):
-    shaft = stepped_shaft(658)
+    shaft = stepped_shaft(847)
     text = ("#VRML V2.0 utf8\n# cadlod sample: stepped shaft, units mm\n"
             + part("SHAFT", (0, 0, 0), (0, 0, 1, 0),
                    shape(shaft, "Material { diffuseColor 0.7 0.7 0.75 specularColor 0.5 0.5 0.5 }")))
@@ -159,7 +160,7 @@ def write_shaft(path):
 
 
 def write_assembly(path):
-    shaft, housing, screw, plate = stepped_shaft(658), tube(30.0, 19.0, 40.0, 1302), bolt(240), box(260, 90, 12)
+    shaft, housing, screw, plate = stepped_shaft(847), tube(30.0, 19.0, 40.0, 1299), bolt(242), box(260, 90, 12)
     steel = "DEF STEEL Material { diffuseColor 0.7 0.7 0.75 specularColor 0.5 0.5 0.5 }"
     parts = [part("SHAFT", (0, 0, 0), (0, 1, 0, 1.5707963), shape(shaft, steel))]
     parts.append(part("HOUSING_A", (15, 0, 0), (0, 1, 0, 1.5707963),
