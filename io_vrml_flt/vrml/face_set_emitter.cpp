@@ -184,16 +184,24 @@ private:
 
     bool useFileNormals() const { return in_.normals.present() && !options_.recomputeNormals; }
 
+    Vec3f toWorldNormal(const Vec3& local) const
+    {
+        const Vec3 n = normalized(normalMatrix_.transformVector(local));
+        return {float(n.x), float(n.y), float(n.z)};
+    }
+
+    // World-space unit normal per corner. File normals are transformed once per value,
+    // not once per corner.
     void computeCornerNormals()
     {
-        cornerNormals_.assign(corners_.size(), Vec3{});
+        cornerNormals_.assign(corners_.size(), Vec3f{0, 0, 0});
         if (useFileNormals()) {
+            std::vector<Vec3f> world(in_.normals.valueCount());
+            for (size_t i = 0; i < world.size(); ++i) world[i] = toWorldNormal(coordAt(*in_.normals.values, int32_t(i)));
             for (const Face& f : faces_)
                 for (uint32_t k = 0; k < f.cornerCount; ++k) {
-                    const Corner& c = corners_[f.firstCorner + k];
-                    const long i = valueIndex(in_.normals, c, f);
-                    cornerNormals_[f.firstCorner + k] =
-                        i >= 0 ? coordAt(*in_.normals.values, int32_t(i)) : normalized(faceNormal(f));
+                    const long i = valueIndex(in_.normals, corners_[f.firstCorner + k], f);
+                    cornerNormals_[f.firstCorner + k] = i >= 0 ? world[size_t(i)] : toWorldNormal(faceNormal(f));
                 }
             return;
         }
@@ -204,9 +212,10 @@ private:
             unitNormals[i] = normalized(areaNormals[i]);
         }
         if (in_.creaseAngle <= 1e-6f) {
-            for (size_t i = 0; i < faces_.size(); ++i)
-                for (uint32_t k = 0; k < faces_[i].cornerCount; ++k)
-                    cornerNormals_[faces_[i].firstCorner + k] = unitNormals[i];
+            for (size_t i = 0; i < faces_.size(); ++i) {
+                const Vec3f n = toWorldNormal(unitNormals[i]);
+                for (uint32_t k = 0; k < faces_[i].cornerCount; ++k) cornerNormals_[faces_[i].firstCorner + k] = n;
+            }
             return;
         }
         smoothAcrossCreases(areaNormals, unitNormals);
@@ -235,7 +244,7 @@ private:
                 if (dot(own, unitNormals[g]) >= cosCrease) sum += areaNormals[g];
             }
             const Vec3 n = visited >= kMaxNeighbours ? own : normalized(sum);
-            cornerNormals_[c] = length(n) > 0 ? n : own;
+            cornerNormals_[c] = toWorldNormal(length(n) > 0 ? n : own);
         }
     }
 
@@ -316,8 +325,7 @@ private:
                        const Rgba8& overall)
     {
         const Corner& corner = corners_[c];
-        const Vec3 n = normalized(normalMatrix_.transformVector(cornerNormals_[c]));
-        const Vec3f normal{float(n.x), float(n.y), float(n.z)};
+        const Vec3f& normal = cornerNormals_[c];
         const long colorIndex = perVertexColors ? valueIndex(in_.colors, corner, f) : -1;
         const Rgba8 color = colorIndex >= 0 ? toRgba8(in_.colors, colorIndex) : overall;
         Vec2f tex{0, 0};
@@ -351,7 +359,7 @@ private:
     bool badAttributeWarned_ = false;
     std::vector<Corner> corners_;
     std::vector<Face> faces_;
-    std::vector<Vec3> cornerNormals_;
+    std::vector<Vec3f> cornerNormals_;
     std::vector<Vec3> polygon_;
     std::vector<std::array<uint32_t, 3>> faceTriangles_;
     std::vector<int32_t> nextVertex_;

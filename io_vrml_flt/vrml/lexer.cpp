@@ -237,12 +237,18 @@ bool Lexer::readInt(int32_t& value)
 {
     if (!hasPeeked_) {
         skipSpace();
-        if (p_ < end_ && (*p_ == '-' || (*p_ >= '0' && *p_ <= '9'))) {
-            auto r = std::from_chars(p_, end_, value);
-            if (r.ec == std::errc() && (r.ptr >= end_ || !isWordChar(*r.ptr))) {
-                p_ = r.ptr;
-                return true;
-            }
+        // Hand-rolled decimal fast path (indices are short integers); anything unusual
+        // (overflow, '.', exponent, hex) falls through to the float path.
+        const char* p = p_;
+        const bool negative = p < end_ && *p == '-';
+        if (negative) ++p;
+        const char* digits = p;
+        int64_t v = 0;
+        while (p < end_ && unsigned(*p - '0') < 10 && p - digits < 10) v = v * 10 + (*p++ - '0');
+        if (p > digits && (p >= end_ || !isWordChar(*p)) && v <= INT32_MAX) {
+            value = int32_t(negative ? -v : v);
+            p_ = p;
+            return true;
         }
     }
     float f = 0;
