@@ -254,6 +254,11 @@ bool saveOpenFlight(MeshIOInterface& plugin, const QString& fileName, MeshModel&
         level.name = m.label().toStdString();
         model.levels.push_back(std::move(level));
     }
+    if (model.triangleCount() == 0) {
+        error = fileName + ": layer " + m.label() + " has no triangles to write";
+        report(plugin, GLLogStream::WARNING, error);
+        return false;
+    }
     flt::WriteOptions options = writeOptions(par);
     if (cb)
         options.progress = [cb](int percent) { cb(percent, "Writing OpenFlight"); };

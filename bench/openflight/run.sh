@@ -35,8 +35,9 @@ header() {
 
 header "One mesh, about $tris triangles (4 parts)"
 "$tool" ply "$tris" "$work/mesh.ply" >/dev/null
-for mode in meshes faces; do
-  out=$("$tool" ours "$tris" "$work/ours_$mode.flt" "$mode")
+for mode in Mesh Face; do
+  arg=$([ "$mode" = Mesh ] && echo meshes || echo faces)
+  out=$("$tool" ours "$tris" "$work/ours_$mode.flt" "$arg")
   row "cadlod ($mode records)" "$(field write_seconds "$out")" "$(field bytes "$out")" \
       "$(field triangles "$out")" "$work/ours_$mode.flt"
   n=$(field triangles "$out")
