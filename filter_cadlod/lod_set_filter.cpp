@@ -48,7 +48,7 @@ void logTable(MeshFilterInterface& plugin, const LodSetResult& r, double seconds
 {
     plugin.Log("CAD LOD set: %d levels in %.2f s (model size %.6g, errors in model units)",
                int(r.levels.size()), seconds, r.modelSize);
-    plugin.Log("level  reduction  triangles  hausdorff max  (%% diag)  mean  switch out..in  compactness mean  <0.1");
+    plugin.Log("level  reduction  triangles  hausdorff max  (% diag)  mean  switch out..in  compactness mean  <0.1");
     for (std::size_t k = 0; k < r.levels.size(); ++k) {
         const LodLevel& l = r.levels[k];
         const CompactnessStats& c = r.compactness[k];
@@ -127,9 +127,20 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
         error = QString::fromStdString(result.error);
         return false;
     }
-    for (std::size_t k = 0; k < layers.size(); ++k) {
-        layers[k]->setLabel(QString("%1 LOD%2 (%3 faces)").arg(baseName).arg(k + 1).arg(layers[k]->cm.fn));
-        layers[k]->UpdateBoxAndNormals();
+    std::vector<MeshModel*> kept;
+    for (std::size_t i = 0; i < layers.size(); ++i) {
+        const int level = int(i) + 1;
+        const auto& dropped = result.droppedLevels;
+        if (std::find(dropped.begin(), dropped.end(), level) != dropped.end())
+            md.delMesh(layers[i]);
+        else
+            kept.push_back(layers[i]);
+    }
+    for (const std::string& warning : result.warnings)
+        plugin.Log(GLLogStream::WARNING, "CAD LOD set: %s", warning.c_str());
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+        kept[k]->setLabel(QString("%1 LOD%2 (%3 faces)").arg(baseName).arg(k + 1).arg(kept[k]->cm.fn));
+        kept[k]->UpdateBoxAndNormals();
     }
     logTable(plugin, result, timer.elapsed() / 1000.0);
     return true;

@@ -31,11 +31,15 @@ struct LodSetOptions {
 
 struct LodSetResult {
     std::string error;                       // non-empty: nothing usable was built
-    std::vector<LodLevel> levels;            // level 0 (the original) first
+    // The kept levels, renumbered 0..n (level 0 = the original). Levels that would never be
+    // shown are dropped (see selectUsefulLevels); the caller discards their meshes.
+    std::vector<LodLevel> levels;
     std::vector<CompactnessStats> compactness;
     std::vector<SimplifyStats> steps;        // one per simplified level (level 1..n)
     std::vector<SymmetricHausdorff> distance;
     double modelSize = 0.0;                  // bbox diagonal of the original
+    std::vector<int> droppedLevels;          // as numbered by newLevel(k)
+    std::vector<std::string> warnings;       // why each dropped level was dropped
     bool ok() const { return error.empty(); }
 };
 
@@ -61,6 +65,40 @@ vcg::Box3d liveVertexBox(const MeshType& m)
         if (!v.IsD())
             box.Add(vcg::Point3d::Construct(v.cP()));
     return box;
+}
+
+// Drops the levels selectUsefulLevels rejects from `result` and `meshes` (parallel to
+// result.levels), records them, and renumbers the rest.
+template <class MeshType>
+void keepUsefulLevels(LodSetResult& r, std::vector<MeshType*>& meshes)
+{
+    const double errorFloor = std::max(kRelativeErrorFloor * r.modelSize, 1e-12);
+    const LevelSelection selection = selectUsefulLevels(r.levels, errorFloor);
+    LodSetResult kept = r;
+    kept.levels.clear();
+    kept.compactness.clear();
+    kept.steps.clear();
+    kept.distance.clear();
+    std::vector<MeshType*> keptMeshes;
+    for (std::size_t k = 0; k < r.levels.size(); ++k) {
+        if (!selection.keep[k]) {
+            kept.droppedLevels.push_back(int(k));
+            kept.warnings.push_back("level " + std::to_string(k) + " (" + std::to_string(r.levels[k].faces) +
+                                    " faces) dropped: " + selection.why[k]);
+            continue;
+        }
+        LodLevel level = r.levels[k];
+        level.level = int(kept.levels.size());
+        kept.levels.push_back(level);
+        kept.compactness.push_back(r.compactness[k]);
+        if (k > 0) {
+            kept.steps.push_back(r.steps[k - 1]);
+            kept.distance.push_back(r.distance[k - 1]);
+        }
+        keptMeshes.push_back(meshes[k]);
+    }
+    r = std::move(kept);
+    meshes = std::move(keptMeshes);
 }
 
 }  // namespace detail
@@ -127,7 +165,9 @@ LodSetResult buildLodSet(MeshType& original, const LodSetOptions& options,
         meshes.push_back(&mesh);
     }
 
-    assignSwitchDistances(result.levels, result.modelSize, options.view);
+    detail::keepUsefulLevels(result, meshes);
+    const double errorFloor = std::max(kRelativeErrorFloor * result.modelSize, 1e-12);
+    assignSwitchDistances(result.levels, result.modelSize, options.view, errorFloor);
     for (std::size_t k = 0; k < meshes.size(); ++k)
         lodLevelHandle(*meshes[k])() = result.levels[k];
     return result;

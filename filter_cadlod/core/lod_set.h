@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -81,12 +82,59 @@ inline double projectedErrorDistance(double error, const ViewParams& view)
     return error * view.viewportHeightPx / (2.0 * view.pixelThreshold * std::tan(halfFov));
 }
 
+// Errors below this fraction of the model size count as this much, so that a lossless
+// level still gets a (tiny) distance of its own.
+inline constexpr double kRelativeErrorFloor = 1e-7;
+
+// Which simplified levels are worth a place in the set (levels[0] is the original and is
+// always kept). A level is dropped when it has no fewer faces than the level kept before it
+// (the simplifier could not get further), or when the next kept level is at least as
+// accurate: that level is lighter and would be switched in no later, so this one would
+// never be shown. `why[k]` says why level k was dropped.
+struct LevelSelection {
+    std::vector<bool> keep;
+    std::vector<std::string> why;
+};
+
+inline LevelSelection selectUsefulLevels(const std::vector<LodLevel>& levels, double errorFloor)
+{
+    LevelSelection s;
+    s.keep.assign(levels.size(), true);
+    s.why.assign(levels.size(), "");
+    std::size_t lastKept = 0;
+    for (std::size_t k = 1; k < levels.size(); ++k) {
+        if (levels[k].faces >= levels[lastKept].faces) {
+            s.keep[k] = false;
+            s.why[k] = "the simplifier stopped at " + std::to_string(levels[k].faces) +
+                       " faces, no fewer than level " + std::to_string(lastKept);
+        } else {
+            lastKept = k;
+        }
+    }
+    double nextError = std::numeric_limits<double>::infinity();
+    std::size_t nextLevel = levels.size();
+    for (std::size_t k = levels.size(); k-- > 1;) {
+        if (!s.keep[k])
+            continue;
+        const double error = std::max(levels[k].hausdorffMax, errorFloor);
+        if (error < nextError) {
+            nextError = error;
+            nextLevel = k;
+        } else {
+            s.keep[k] = false;
+            s.why[k] = "level " + std::to_string(nextLevel) + " has fewer faces and no larger error, "
+                       "so this level would never be shown";
+        }
+    }
+    return s;
+}
+
 // Fills switchIn/switchOut of levels[0..n) (level order, level 0 first) from their
-// hausdorffMax. The last level stays visible until the whole model (bounding-box diagonal
-// `modelSize`) projects below one pixel. Errors that are not increasing (a coarser level
-// measured closer than a finer one) are clamped so that the ranges stay monotone and
-// contiguous; such a level gets an empty range and is never shown.
-inline void assignSwitchDistances(std::vector<LodLevel>& levels, double modelSize, const ViewParams& view)
+// hausdorffMax (at least `errorFloor`). The last level stays visible until the whole model
+// (bounding-box diagonal `modelSize`) projects below one pixel. Levels must have
+// increasing errors (selectUsefulLevels); any that do not get an empty range.
+inline void assignSwitchDistances(std::vector<LodLevel>& levels, double modelSize, const ViewParams& view,
+                                  double errorFloor = 0.0)
 {
     if (levels.empty())
         return;
@@ -95,14 +143,14 @@ inline void assignSwitchDistances(std::vector<LodLevel>& levels, double modelSiz
         levels[k].switchOut = near;
         double far;
         if (k + 1 < levels.size())
-            far = std::max(near, projectedErrorDistance(levels[k + 1].hausdorffMax, view));
+            far = projectedErrorDistance(std::max(levels[k + 1].hausdorffMax, errorFloor), view);
         else {
             ViewParams onePixel = view;
             onePixel.pixelThreshold = 1.0;
-            far = std::max(near, projectedErrorDistance(modelSize, onePixel));
+            far = projectedErrorDistance(modelSize, onePixel);
         }
-        levels[k].switchIn = far;
-        near = far;
+        levels[k].switchIn = std::max(near, far);
+        near = levels[k].switchIn;
     }
 }
 

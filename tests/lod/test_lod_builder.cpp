@@ -23,6 +23,14 @@ void makeSphereWithTwoParts(TestMesh& m)
     partTableHandle(m)() = {PartInfo{"LOWER", {1, 0, 0, 1}}, PartInfo{"UPPER", {0, 0, 1, 1}}};
 }
 
+int facesRepeatingAVertex(const TestMesh& m)
+{
+    int n = 0;
+    for (const auto& f : m.face)
+        n += !f.IsD() && (f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(2) == f.cV(0));
+    return n;
+}
+
 struct Built {
     TestMesh original;
     std::deque<TestMesh> levels;
@@ -55,6 +63,7 @@ TEST(LodBuilder, PaperLevelsAreCoarserAndFurther)
     for (int k = 1; k < 6; ++k) {
         EXPECT_NEAR(levels[k].faces, expected[k], 2) << "level " << k;
         EXPECT_EQ(b.levels[k - 1].fn, levels[k].faces);
+        EXPECT_EQ(facesRepeatingAVertex(b.levels[k - 1]), 0) << "level " << k;
         EXPECT_LT(levels[k].faces, levels[k - 1].faces);
         EXPECT_GT(levels[k].hausdorffMax, 0.0);
         EXPECT_GE(levels[k].hausdorffMax, levels[k - 1].hausdorffMax) << "level " << k;
@@ -129,6 +138,29 @@ TEST(LodBuilder, FaceCountLevels)
     ASSERT_TRUE(b.result.ok()) << b.result.error;
     EXPECT_NEAR(b.result.levels[1].faces, 3000, 2);
     EXPECT_NEAR(b.result.levels[3].faces, 300, 2);
+}
+
+TEST(LodBuilder, LevelsThatWouldNeverBeShownAreDroppedAndRenumbered)
+{
+    // A flat square: every level is lossless, so only the lightest is worth keeping.
+    Built b;
+    vcg::tri::Grid(b.original, 21, 21, 1.0f, 1.0f, nullptr);
+    vcg::tri::UpdateTopology<TestMesh>::VertexFace(b.original);
+    LodSetOptions options;
+    options.levels = "50 75";
+    b.result = buildLodSet<TestMesh>(b.original, options, [&b](int) -> TestMesh& {
+        b.levels.emplace_back();
+        return b.levels.back();
+    });
+    ASSERT_TRUE(b.result.ok()) << b.result.error;
+    ASSERT_EQ(b.result.levels.size(), 2u);
+    EXPECT_EQ(b.result.droppedLevels, std::vector<int>{1});
+    ASSERT_EQ(b.result.warnings.size(), 1u);
+    EXPECT_NE(b.result.warnings[0].find("never be shown"), std::string::npos) << b.result.warnings[0];
+    EXPECT_EQ(b.result.levels[1].level, 1);
+    EXPECT_EQ(lodLevelHandle(b.levels[1])().level, 1);
+    EXPECT_FALSE(hasLodLevel(b.levels[0]));
+    EXPECT_LT(b.result.levels[0].switchOut, b.result.levels[0].switchIn);
 }
 
 TEST(LodBuilder, BadLevelListIsAClearErrorAndBuildsNothing)

@@ -91,3 +91,47 @@ TEST(SwitchDistance, NonIncreasingErrorGivesEmptyRangeNotDisorder)
         EXPECT_EQ(levels[k].switchIn, levels[k + 1].switchOut);
     }
 }
+
+namespace {
+std::vector<LodLevel> levelsWith(std::vector<int> faces, std::vector<double> errors)
+{
+    std::vector<LodLevel> levels(faces.size());
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+        levels[k].level = int(k);
+        levels[k].faces = faces[k];
+        levels[k].hausdorffMax = errors[k];
+    }
+    return levels;
+}
+}  // namespace
+
+TEST(LevelSelection, KeepsLevelsThatGetLighterAndCoarser)
+{
+    const LevelSelection s = selectUsefulLevels(levelsWith({100, 50, 20}, {0, 0.1, 0.3}), 1e-9);
+    EXPECT_EQ(s.keep, (std::vector<bool>{true, true, true}));
+}
+
+TEST(LevelSelection, DropsALevelTheSimplifierCouldNotReduce)
+{
+    const LevelSelection s = selectUsefulLevels(levelsWith({100, 50, 50, 20}, {0, 0.1, 0.1, 0.3}), 1e-9);
+    EXPECT_EQ(s.keep, (std::vector<bool>{true, true, false, true}));
+    EXPECT_NE(s.why[2].find("stopped at 50 faces"), std::string::npos) << s.why[2];
+}
+
+TEST(LevelSelection, DropsALevelThatWouldNeverBeShown)
+{
+    // Level 2 is lighter than level 1 and no less accurate: level 1 has no distance range.
+    const LevelSelection s = selectUsefulLevels(levelsWith({100, 50, 40, 20}, {0, 0.2, 0.2, 0.5}), 1e-9);
+    EXPECT_EQ(s.keep, (std::vector<bool>{true, false, true, true}));
+    EXPECT_NE(s.why[1].find("never be shown"), std::string::npos) << s.why[1];
+}
+
+TEST(LevelSelection, LosslessLevelsKeepTheLightestAndLevelZeroStays)
+{
+    const LevelSelection s = selectUsefulLevels(levelsWith({100, 50, 40}, {0, 0, 0}), 1e-9);
+    EXPECT_EQ(s.keep, (std::vector<bool>{true, false, true}));
+    std::vector<LodLevel> kept = levelsWith({100, 40}, {0, 0});
+    assignSwitchDistances(kept, 10.0, ViewParams{}, 1e-9);
+    EXPECT_LT(kept[0].switchOut, kept[0].switchIn);  // the original keeps a (tiny) range
+    EXPECT_LT(kept[1].switchOut, kept[1].switchIn);
+}
