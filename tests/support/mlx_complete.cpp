@@ -15,6 +15,7 @@
 #include <QApplication>
 #include <QDomDocument>
 #include <QFile>
+#include <QHash>
 #include <QSet>
 #include <QTextStream>
 
@@ -95,6 +96,7 @@ bool completeFilter(PluginManager& pm, MeshDocument& md, const QDomElement& give
 
 int main(int argc, char** argv)
 {
+    qSetGlobalQHashSeed(0);  // the same attribute order every run
     QApplication app(argc, argv);
     if (argc != 4)
         return fail("usage: cadlod_mlx_complete PLUGIN_DIR IN.mlx OUT.mlx");
