@@ -6,6 +6,7 @@
 
 #include "core/simplify.h"
 
+#include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/append.h>
 
 namespace cadlod::test {

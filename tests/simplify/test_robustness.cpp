@@ -1,0 +1,119 @@
+// Same input, same output; bad input never crashes and is reported.
+#include "mesh_checks.h"
+#include "simplify_test_util.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+using namespace cadlod;
+using namespace cadlod::test;
+
+namespace {
+
+std::vector<float> liveGeometry(const TestMesh& m)
+{
+    std::vector<float> out;
+    for (const auto& f : m.face)
+        if (!f.IsD())
+            for (int j = 0; j < 3; ++j)
+                for (int k = 0; k < 3; ++k)
+                    out.push_back(f.cP(j)[k]);
+    return out;
+}
+
+void addTriangle(TestMesh& m, vcg::Point3f a, vcg::Point3f b, vcg::Point3f c)
+{
+    auto v = vcg::tri::Allocator<TestMesh>::AddVertices(m, 3);
+    v[0].P() = a;
+    v[1].P() = b;
+    v[2].P() = c;
+    vcg::tri::Allocator<TestMesh>::AddFace(m, &v[0], &v[1], &v[2]);
+}
+
+}  // namespace
+
+TEST(SimplifyRobustness, SameInputSameOutput)
+{
+    TestMesh original, a, b;
+    makeShaft(original, 200, 2);
+    copyMesh(a, original);
+    copyMesh(b, original);
+    simplify(a, targetParams(original.fn / 8));
+    simplify(b, targetParams(original.fn / 8));
+    EXPECT_EQ(a.fn, b.fn);
+    EXPECT_EQ(liveGeometry(a), liveGeometry(b));
+}
+
+TEST(SimplifyRobustness, EmptyMeshIsReported)
+{
+    TestMesh m;
+    const SimplifyStats s = simplify(m, targetParams(10));
+    EXPECT_FALSE(s.ok);
+    EXPECT_NE(s.message.find("empty"), std::string::npos) << s.message;
+}
+
+TEST(SimplifyRobustness, TargetAboveFaceCountDoesNothing)
+{
+    TestMesh m;
+    makeShaft(m, 32);
+    const int before = m.fn;
+    const SimplifyStats s = simplify(m, targetParams(before + 100));
+    EXPECT_TRUE(s.ok);
+    EXPECT_EQ(m.fn, before);
+    EXPECT_NE(s.message.find("nothing to do"), std::string::npos) << s.message;
+}
+
+TEST(SimplifyRobustness, MissingStopCriterionIsReported)
+{
+    TestMesh m;
+    makeShaft(m, 32);
+    const SimplifyStats s = simplify(m, SimplifyParams());
+    EXPECT_FALSE(s.ok);
+    EXPECT_NE(s.message.find("stop criterion"), std::string::npos) << s.message;
+}
+
+TEST(SimplifyRobustness, NonManifoldEdgesAreLockedNotBroken)
+{
+    TestMesh m;
+    makeShaft(m, 64);
+    // Three fins on one edge of the shaft's end face: a non-manifold edge.
+    const vcg::Point3f a(0, 0, 0), b(5, 0, 0);
+    addTriangle(m, a, b, vcg::Point3f(2, 3, -4));
+    addTriangle(m, a, b, vcg::Point3f(2, -3, -4));
+    addTriangle(m, a, b, vcg::Point3f(2, 0, -6));
+    vcg::tri::Clean<TestMesh>::RemoveDuplicateVertex(m);
+    const int nonManifoldBefore = nonManifoldEdges(m);
+    ASSERT_GT(nonManifoldBefore, 0);
+    const SimplifyStats s = simplify(m, targetParams(m.fn / 4));
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_GT(s.nonManifoldEdges, 0);
+    EXPECT_LE(nonManifoldEdges(m), nonManifoldBefore);
+    EXPECT_LT(m.fn, s.facesBefore);
+}
+
+TEST(SimplifyRobustness, DuplicateVerticesZeroAreaFacesIsolatedAndNonFiniteVertices)
+{
+    TestMesh m;
+    makeShaft(m, 64);
+    addTriangle(m, vcg::Point3f(0, 0, 200), vcg::Point3f(1, 0, 200), vcg::Point3f(2, 0, 200));  // zero area
+    addTriangle(m, vcg::Point3f(0, 0, 300), vcg::Point3f(0, 0, 300), vcg::Point3f(0, 0, 300));  // a point
+    auto v = vcg::tri::Allocator<TestMesh>::AddVertices(m, 3);  // isolated, one not finite
+    v[0].P() = vcg::Point3f(50, 50, 50);
+    v[1].P() = vcg::Point3f(std::numeric_limits<float>::quiet_NaN(), 0, 0);
+    addTriangle(m, vcg::Point3f(std::numeric_limits<float>::infinity(), 0, 0), vcg::Point3f(1, 1, 1),
+                vcg::Point3f(2, 1, 1));
+    // Repeated vertex reference (a face using one vertex twice).
+    vcg::tri::Allocator<TestMesh>::AddFace(m, &m.vert[0], &m.vert[0], &m.vert[1]);
+    const int before = m.fn;
+    const SimplifyStats s = simplify(m, targetParams(before / 3));
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_GE(s.degenerateFaces, 1);
+    EXPECT_LT(m.fn, before);
+    EXPECT_TRUE(std::isfinite(s.largestError));
+    for (const auto& f : m.face)
+        if (!f.IsD() && f.cV(0) != f.cV(1))
+            for (int j = 0; j < 3; ++j)
+                if (f.cV(j) != &m.vert[0] && std::isfinite(f.cP(j)[0]))
+                    EXPECT_TRUE(std::isfinite(f.cP(j)[1]) && std::isfinite(f.cP(j)[2]));
+}
