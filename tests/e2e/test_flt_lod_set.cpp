@@ -61,3 +61,37 @@ TEST(FltLodSet, WholeSetIsWrittenWithItsSwitchDistances)
     ASSERT_EQ(model.levels.size(), 3u);
     EXPECT_EQ(cadlod::flt::finestLevel(model), 0u);
 }
+
+// The documented pipeline on the sample CAD assembly:
+//   meshlabserver -i cad_assembly.wrl.gz -s lods.mlx -o assembly.flt
+// every LOD level keeps one named Object per CAD part.
+TEST(FltLodSet, CadAssemblyKeepsItsPartsInEveryLevel)
+{
+    if (!lodFilterAvailable())
+        GTEST_SKIP() << "the filter \"" << kLodFilter << "\" is not in this build";
+    const std::string dir = scratchDir("flt_lod_set_assembly");
+    writeText(dir + "/lods.mlx",
+              mlxScript({mlxFilter(kLodFilter, {mlxParam("RichString", "levels", "50 80")})}));
+    const std::string flt = dir + "/assembly.flt";
+    const ServerRun run = runMeshlabServer(
+        {"-i", std::string(CADLOD_SOURCE_DIR) + "/docs/sample/cad_assembly.wrl.gz", "-s", dir + "/lods.mlx", "-o", flt},
+        300);
+    ASSERT_TRUE(run.ok()) << run.output;
+
+    const OsgProbe probe = probeWithOsg(flt);
+    ASSERT_TRUE(probe.loaded);
+    ASSERT_EQ(probe.lods.size(), 3u);
+    const std::vector<std::string> level0(probe.lods[0].names.begin(), probe.lods[0].names.end());
+    std::vector<std::string> parts;
+    for (const std::string& n : level0)
+        if (n != "LOD child0" && std::find(parts.begin(), parts.end(), n) == parts.end())
+            parts.push_back(n);
+    ASSERT_GE(parts.size(), 3u) << "the sample assembly has several named parts";
+    for (std::size_t l = 1; l < probe.lods.size(); ++l) {
+        for (const std::string& part : parts)
+            EXPECT_NE(std::find(probe.lods[l].names.begin(), probe.lods[l].names.end(), part),
+                      probe.lods[l].names.end())
+                << part << " missing from level " << l;
+        EXPECT_LT(probe.lods[l].triangles.size(), probe.lods[l - 1].triangles.size());
+    }
+}
