@@ -33,11 +33,11 @@ LEVELS="50 60 70 80 90"
 STOCK_FILTER="Simplification: Quadric Edge Collapse Decimation"
 CAD_FILTER="Simplification: CAD Quadric Edge Collapse (compactness)"
 LOD_FILTER="Generate CAD LOD Set"
-# Filter scripts with every parameter listed (meshlabserver 2020.09 aborts otherwise).
-STOCK_MLX="$ROOT/bench/paper/stock_qem_90.mlx"
-CAD_MLX="$ROOT/bench/paper/cad_simplify_90.mlx"  # used once it exists
-LOD90_MLX="$ROOT/bench/paper/lod_set_90.mlx"
-LOD_MLX="$ROOT/bench/paper/lod_set_paper.mlx"   # levels 50 60 70 80 90
+# Filter scripts list only what differs from the defaults; complete_mlx fills in every other
+# parameter (meshlabserver 2020.09 aborts otherwise). The CAD simplification filter's
+# reduction parameter, for when the plugin has that filter:
+CAD_REDUCTION_PARAM='<Param type="RichFloat" name="reductionPerc" value="%s"/>'
+
 
 say() { printf '[paper] %s\n' "$*" >&2; }
 die() { printf '[paper] ERROR: %s\n' "$*" >&2; exit 1; }
@@ -46,12 +46,14 @@ die() { printf '[paper] ERROR: %s\n' "$*" >&2; exit 1; }
 build_tools() {
   local generator=()
   [ -f "$BUILD/CMakeCache.txt" ] || generator=(-G Ninja)
-  say "configuring and building in $BUILD (stage, osg_render, paper_measure)"
-  cmake -S "$ROOT" -B "$BUILD" "${generator[@]}" -DCADLOD_BUILD_BENCH=ON >"$WORK/build.log" 2>&1 ||
-    die "cmake configure failed, see $WORK/build.log"
-  cmake --build "$BUILD" --target stage osg_render paper_measure -j2 >>"$WORK/build.log" 2>&1 ||
+  say "configuring and building in $BUILD (stage, osg_render, paper_measure, cadlod_mlx_complete)"
+  cmake -S "$ROOT" -B "$BUILD" "${generator[@]}" -DCADLOD_BUILD_BENCH=ON -DCADLOD_BUILD_TESTS=ON \
+    >"$WORK/build.log" 2>&1 || die "cmake configure failed, see $WORK/build.log"
+  cmake --build "$BUILD" --target stage osg_render paper_measure cadlod_mlx_complete -j2 >>"$WORK/build.log" 2>&1 ||
     die "build failed, see $WORK/build.log"
   MLS="$BUILD/stage/bin/meshlabserver"
+  MLX_COMPLETE="$(find "$BUILD/tests" -name cadlod_mlx_complete -type f -perm -u+x | head -1)"
+  [ -n "$MLX_COMPLETE" ] || die "cadlod_mlx_complete was not built"
   RENDER="$BUILD/bench/paper/osg_render"
   MEASURE="$BUILD/bench/paper/paper_measure"
 }
@@ -78,6 +80,20 @@ mls() {
   timeout 900 "$MLS" "$@" >>"$WORK/meshlabserver.log" 2>&1
 }
 
+# complete_mlx IN OUT: IN with every parameter the staged plugins define (defaults for
+# those IN leaves out); false when IN names a filter or parameter the plugins lack.
+complete_mlx() {
+  "$MLX_COMPLETE" "$BUILD/stage/lib/x86_64-linux-gnu/meshlab/plugins" "$1" "$2" >>"$WORK/meshlabserver.log" 2>&1
+}
+
+# single_filter_mlx OUT FILTER [PARAM_XML]: a completed one-filter script
+single_filter_mlx() {
+  local out="$1" filter="$2" param="${3:-}"
+  printf '<!DOCTYPE FilterScript>\n<FilterScript>\n <filter name="%s">\n  %s\n </filter>\n</FilterScript>\n' \
+    "$filter" "$param" >"$out.partial"
+  complete_mlx "$out.partial" "$out"
+}
+
 has_filter() { grep -qF "section f" "$WORK/filters.txt" && grep -qF " $1 " "$WORK/filters.txt"; }
 
 # val KEY FILE: the value after "KEY " in a key-value output
@@ -86,35 +102,56 @@ median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] 
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (b > 0) ? a / b : 0 }'; }
 
 # ---------------------------------------------------------------- experiment 1
-experiment1() {
-  local e="$WORK/exp1"
-  mkdir -p "$e"
-  say "experiment 1: shaft, 90 % reduction"
-  mls -i "$SHAFT" -o "$e/original.ply" -m vn || die "meshlabserver cannot read $SHAFT"
-  mls -i "$SHAFT" -s "$STOCK_MLX" -o "$e/stock.ply" -m vn && [ -s "$e/stock.ply" ] ||
-    die "MeshLab's stock QEM failed (see $WORK/meshlabserver.log)"
-  rm -f "$e/cadlod.ply"
-  if has_filter "$CAD_FILTER" && [ -f "$CAD_MLX" ]; then
-    mls -i "$SHAFT" -s "$CAD_MLX" -o "$e/cadlod.ply" -m vn && CAD_ROUTE="MeshLab filter \"$CAD_FILTER\" (defaults, reduction 90 %)" ||
-      rm -f "$e/cadlod.ply"
-  fi
-  if [ ! -s "$e/cadlod.ply" ] && has_filter "$LOD_FILTER"; then
-    mls -i "$SHAFT" -s "$LOD90_MLX" -o "$e/cadlod.ply" -l 1 -m vn &&
-      CAD_ROUTE="MeshLab filter \"$LOD_FILTER\" with levels = 90 (one level, defaults)" || rm -f "$e/cadlod.ply"
-  fi
-  if [ ! -s "$e/cadlod.ply" ]; then
-    "$MEASURE" simplify "$e/original.ply" "$e/cadlod.ply" 90 >"$e/cadlod.simplify" ||
-      die "cadlod's simplifier failed on the shaft"
-    CAD_ROUTE="cadlod's simplifier core through bench/paper/paper_measure (defaults, 90 %): the MeshLab filter was not in the plugin"
-  fi
-  say "cadlod route: $CAD_ROUTE"
+# stock_qem IN OUT: MeshLab's QEM with its defaults, 90 %
+stock_qem() {
+  complete_mlx "$ROOT/bench/paper/stock_qem_90.mlx" "$WORK/stock_qem_90.mlx" &&
+    mls -i "$1" -s "$WORK/stock_qem_90.mlx" -o "$2" -m vn fc && [ -s "$2" ] ||
+    die "MeshLab's stock QEM failed on $1 (see $WORK/meshlabserver.log)"
+}
 
-  for m in original stock cadlod; do
-    "$MEASURE" compactness "$e/$m.ply" "$e/$m.hist" 20 >"$e/$m.compactness" || die "compactness of $m failed"
-  done
-  for m in stock cadlod; do
-    "$MEASURE" hausdorff "$e/original.ply" "$e/$m.ply" >"$e/$m.hausdorff" || die "Hausdorff of $m failed"
-  done
+# cadlod_simplify IN OUT PERCENT PLY: cadlod with its defaults at PERCENT % reduction, by the
+# CAD simplification filter when the plugin has it, else the LOD-set filter with that one
+# level, else (on PLY, the same mesh as IN) the simplifier core. Sets CAD_ROUTE.
+cadlod_simplify() {
+  local in="$1" out="$2" pct="$3" ply="$4" script="$WORK/cadlod_$3.mlx"
+  rm -f "$out"
+  # shellcheck disable=SC2059
+  if has_filter "$CAD_FILTER" && single_filter_mlx "$script" "$CAD_FILTER" "$(printf "$CAD_REDUCTION_PARAM" "$pct")"; then
+    mls -i "$in" -s "$script" -o "$out" -m vn fc &&
+      CAD_ROUTE="MeshLab filter \"$CAD_FILTER\" (defaults but the reduction)" || rm -f "$out"
+  fi
+  if [ ! -s "$out" ] && has_filter "$LOD_FILTER" &&
+    single_filter_mlx "$script" "$LOD_FILTER" "<Param type=\"RichString\" name=\"levels\" value=\"$pct\"/>"; then
+    mls -i "$in" -s "$script" -o "$out" -l 1 -m vn fc &&
+      CAD_ROUTE="MeshLab filter \"$LOD_FILTER\" with one level (defaults but the levels), as the plugin has no \"$CAD_FILTER\"" ||
+      rm -f "$out"
+  fi
+  if [ ! -s "$out" ]; then
+    "$MEASURE" simplify "$ply" "$out" "$pct" >"$out.log" || die "cadlod's simplifier failed on $ply"
+    CAD_ROUTE="cadlod's simplifier core with its defaults (bench/paper/paper_measure), as no MeshLab filter of cadlod could do it"
+  fi
+}
+
+# measure_mesh MESH [REFERENCE]: compactness (+ histogram) and the distance to REFERENCE
+measure_mesh() {
+  local mesh="$1" base="${1%.ply}"
+  "$MEASURE" compactness "$mesh" "$base.hist" 20 >"$base.compactness" || die "cannot measure $mesh"
+  if [ -n "${2:-}" ]; then
+    "$MEASURE" hausdorff "$2" "$mesh" >"$base.hausdorff" || die "Hausdorff distance of $mesh failed"
+  fi
+}
+
+experiment1() {
+  local e="$WORK/exp1" m
+  mkdir -p "$e"
+  rm -f "$e"/*.ply
+  say "experiment 1: shaft, 90 % reduction"
+  mls -i "$SHAFT" -o "$e/original.ply" -m vn fc && [ -s "$e/original.ply" ] || die "meshlabserver cannot read $SHAFT"
+  stock_qem "$SHAFT" "$e/stock.ply"
+  cadlod_simplify "$SHAFT" "$e/cadlod.ply" 90 "$e/original.ply"
+  say "cadlod route: $CAD_ROUTE"
+  measure_mesh "$e/original.ply"
+  for m in stock cadlod; do measure_mesh "$e/$m.ply" "$e/original.ply"; done
   fig6_pictures "$e"
   fig6_histogram "$e"
 }
@@ -130,13 +167,15 @@ fig6_pictures() {
       "$RENDER" "$e/$m.ply" --shot "$e/$m-wire.png" "${common[@]}" "${wire[@]}" >>"$e/$m.shot" 2>>"$WORK/render.log" ||
       die "osg_render cannot draw $m (see $WORK/render.log)"
   done
-  local kind
+  local kind format
   for kind in shaded wire; do
+    format=(-depth 8 "$IMG/paper-fig6-$kind.png")
+    [ "$kind" = wire ] && format=(-colors 32 "PNG8:$IMG/paper-fig6-$kind.png")
     montage -font DejaVu-Sans -pointsize 14 \
       -label "(a) original, $(val faces "$e/original.compactness") triangles" "$e/original-$kind.png" \
       -label "(b) MeshLab QEM, $(val faces "$e/stock.compactness")" "$e/stock-$kind.png" \
       -label "(c) cadlod, $(val faces "$e/cadlod.compactness")" "$e/cadlod-$kind.png" \
-      -tile 3x1 -geometry 400x300+4+2 -colors 32 "PNG8:$IMG/paper-fig6-$kind.png"
+      -tile 3x1 -geometry 400x300+4+2 "${format[@]}"
   done
 }
 
@@ -145,7 +184,7 @@ fig6_histogram() {
   gnuplot <<GP
 set terminal pngcairo size 720,400 font "DejaVu Sans,10"
 set output "$IMG/paper-fig6-compactness.png"
-set title "Triangle compactness, shaft reduced by 90 %"
+set title "Triangle compactness, shaft (cleaned) and its 90 % reductions"
 set xlabel "compactness 4√3·A / (l0²+l1²+l2²)  (1 = equilateral)"
 set ylabel "share of triangles"
 set xrange [0:1]
@@ -161,42 +200,25 @@ GP
 
 # ---------------------------------------------------------------- experiment 2
 experiment2() {
-  local e="$WORK/exp2" k n
+  local e="$WORK/exp2" k pct
   mkdir -p "$e"
   rm -f "$e"/level*.ply "$e"/level*.flt "$e/lodset.flt"
-  n=$(( $(wc -w <<<"$LEVELS") ))
-  say "experiment 2: assembly LOD set at 0 $LEVELS %"
-  mls -i "$ASSEMBLY" -o "$e/level0.ply" -m vn fc || die "meshlabserver cannot read $ASSEMBLY"
-  LOD_ROUTE=""
-  if has_filter "$LOD_FILTER"; then
-    # meshlabserver saves at most one file per layer: the set through layer 0, levels 1..n as PLY
-    local outs=(-o "$e/lodset.flt" -l 0)
-    for k in $(seq 1 "$n"); do outs+=(-o "$e/level$k.ply" -l "$k" -m vn fc); done
-    mls -i "$ASSEMBLY" -s "$LOD_MLX" "${outs[@]}" || true
-    if [ -s "$e/lodset.flt" ] && [ -s "$e/level$n.ply" ]; then
-      LOD_ROUTE="MeshLab filter \"$LOD_FILTER\" (levels $LEVELS, other parameters default), the set saved by cadlod's OpenFlight exporter"
-    else
-      LOD_FAILURE=$(awk -v start="$(grep -n -F -- "-s $LOD_MLX" "$WORK/meshlabserver.log" | tail -1 | cut -d: -f1)" \
-        'NR > start && /cannot write|[Ff]ailed/ { print; exit }' "$WORK/meshlabserver.log")
-      say "the LOD-set filter did not produce the set: ${LOD_FAILURE:-see $WORK/meshlabserver.log}"
-    fi
-  fi
-  if [ -z "$LOD_ROUTE" ]; then
-    rm -f "$e"/level[1-9]*.ply "$e/lodset.flt"
-    "$MEASURE" lodset "$e/level0.ply" "$e" "$LEVELS" >"$e/lodset.log" || die "LOD-set fallback failed"
-    LOD_ROUTE="cadlod's LOD-set builder core (the filter's code, defaults) through bench/paper/paper_measure, the set written with cadlod's OpenFlight core (one part per level)"
-    if [ -n "${LOD_FAILURE:-}" ]; then
-      LOD_ROUTE="$LOD_ROUTE, because the MeshLab route failed: \`${LOD_FAILURE}\`"
-    else
-      LOD_ROUTE="$LOD_ROUTE, because the filter is not in the plugin"
-    fi
-  fi
-  say "LOD route: $LOD_ROUTE"
+  say "experiment 2: the assembly at 0 $LEVELS %"
+  mls -i "$ASSEMBLY" -o "$e/level0.ply" -m vn fc && [ -s "$e/level0.ply" ] || die "meshlabserver cannot read $ASSEMBLY"
+  k=0
+  for pct in $LEVELS; do
+    k=$((k + 1))
+    cadlod_simplify "$ASSEMBLY" "$e/level$k.ply" "$pct" "$e/level0.ply"
+  done
+  local n=$k
+  LEVEL_ROUTE="$CAD_ROUTE"
+  say "levels: $LEVEL_ROUTE"
   for k in $(seq 0 "$n"); do
-    "$MEASURE" compactness "$e/level$k.ply" >"$e/level$k.compactness" || die "cannot measure level $k"
+    measure_mesh "$e/level$k.ply"
     mls -i "$e/level$k.ply" -o "$e/level$k.flt" && [ -s "$e/level$k.flt" ] ||
       die "cadlod's OpenFlight exporter failed on level $k"
   done
+  whole_lod_set "$e"
 
   say "rendering the whole LOD set (camera path near to far)"
   measure_model "$e/lodset.flt" "$e/set" ""
@@ -206,6 +228,25 @@ experiment2() {
     say "rendering level $k alone"
     measure_model "$e/level$k.flt" "$e/level$k" "--near $PATH_NEAR --far $PATH_FAR"
   done
+}
+
+# The whole set as one .flt: the LOD-set filter, saved by cadlod's exporter; if that
+# fails, the same builder core through paper_measure. Sets SET_ROUTE.
+whole_lod_set() {
+  local e="$1" failure=""
+  if has_filter "$LOD_FILTER" && complete_mlx "$ROOT/bench/paper/lod_set_paper.mlx" "$WORK/lod_set_paper.mlx"; then
+    mls -i "$ASSEMBLY" -s "$WORK/lod_set_paper.mlx" -o "$e/lodset.flt" -l 0 || true
+    if [ -s "$e/lodset.flt" ]; then
+      SET_ROUTE="MeshLab filter \"$LOD_FILTER\" (levels $LEVELS, other parameters default), saved by cadlod's OpenFlight exporter"
+      return
+    fi
+    failure=$(awk -v start="$(grep -n -F -- "-s $WORK/lod_set_paper.mlx" "$WORK/meshlabserver.log" | tail -1 | cut -d: -f1)" \
+      'NR > start && /cannot write|[Ff]ailed/ { print; exit }' "$WORK/meshlabserver.log")
+  fi
+  mkdir -p "$e/set-core"
+  "$MEASURE" lodset "$e/level0.ply" "$e/set-core" "$LEVELS" >"$e/set-core/lodset.log" || die "LOD-set fallback failed"
+  cp "$e/set-core/lodset.flt" "$e/lodset.flt"
+  SET_ROUTE="cadlod's LOD-set builder core with its defaults (bench/paper/paper_measure), written by cadlod's OpenFlight core (one part per level), because ${failure:-the plugin has no \"$LOD_FILTER\"}"
 }
 
 # measure_model FILE PREFIX "EXTRA ARGS": PREFIX.load (median load s, MB), PREFIX.runN, PREFIX.fps
@@ -243,16 +284,10 @@ compactness_row() {  # name file-prefix
   fi
 }
 
-# What share of the faces each method removed, against the 90 % asked for.
-reduction_notes() {
-  local e="$1" f0 m
-  f0=$(val faces "$e/original.compactness")
-  echo "Asked for: 90 % of $f0 faces removed (target $(( (f0 + 5) / 10 )) faces)."
-  for m in stock cadlod; do
-    awk -v name="$m" -v f="$(val faces "$e/$m.compactness")" -v f0="$f0" \
-      'BEGIN { printf "%s removed %.1f %% (%d faces left).\n", (name == "stock") ? "MeshLab QEM" : "cadlod", 100 * (1 - f / f0), f }'
-  done
-  echo "The input has $(val zero_area_faces "$e/original.compactness") zero-area faces (faces whose corners coincide after the importer welds vertices)."
+# What share of the faces a method removed, against the 90 % asked for.
+reduction_note() {  # name mesh-prefix original-prefix
+  awk -v name="$1" -v f="$(val faces "$2.compactness")" -v f0="$(val faces "$3.compactness")" \
+    'BEGIN { printf "%s removed %.1f %% of %d faces (%d left, target %d).", name, 100 * (1 - f / f0), f0, f, int(f0 / 10 + 0.5) }'
 }
 
 table1() {
@@ -275,20 +310,30 @@ table1() {
     k=$((k + 1))
   done
   local st sf sl ss
-  st=$(cat "$e"/level*.compactness | awk '$1 == "faces" { s += $2 } END { print s }'); sf=$(cat "$e/set.fps"); sl=$(cat "$e/set.load"); ss=$(stat -c %s "$e/lodset.flt")
+  st=$(awk '$1 == "level" { s += $4 } END { print s }' "$e/set.load1"); sf=$(cat "$e/set.fps"); sl=$(cat "$e/set.load"); ss=$(stat -c %s "$e/lodset.flt")
   printf '| LOD set (all levels, switching) | %s | %s | %.4f | %.1f | %s | %s | %s | %s |\n' "$st" "$ss" "$sl" "$sf" \
     "$(ratio "$st" "$t0")" "$(ratio "$sf" "$f0")" "$(ratio "$sl" "$l0")" "$(ratio "$ss" "$s0")"
 }
 
 lod_ranges() {
   local e="$WORK/exp2"
-  echo "| level | triangles | visible from | to | frames of the path |"
+  echo "| level | triangles (as OpenSceneGraph draws them) | visible from | to | frames of the path |"
   echo "|---|---|---|---|---|"
   local k
   for k in $(awk '$1 == "level" { print $2 }' "$e/set.load1"); do
     awk -v k="$k" '$1 == "level" && $2 == k { printf "| %s | %s | %s | %s |", $2, $4, $6, $7 }' "$e/set.load1"
     awk -v k="$k" '$1 == "frames_at_level" && $2 == k { printf " %s |\n", $3 }' "$e/set.run1"
   done
+}
+
+# Where the set's levels switch, against the size of the model and the camera path.
+set_note() {
+  local e="$WORK/exp2"
+  awk -v near="$PATH_NEAR" -v far="$PATH_FAR" '
+    $1 == "level" { n++; last_out = $6 }
+    $1 == "radius" { r = $2 }
+    END { printf "The set has %d levels; the coarsest is shown from %g model units on (the bounding radius is %g, the camera path runs from %.0f to %.0f).", n, last_out, r, near, far }' \
+    "$e/set.load1"
 }
 
 write_doc() {
@@ -312,38 +357,44 @@ the absolute numbers (the paper used Vega Prime on a GPU).
 
 ## Experiment 1 (Fig. 6): QEM vs the compactness-aware QEM, shaft reduced by 90 %
 
-Input \`docs/sample/shaft.wrl\`; MeshLab's stock "$STOCK_FILTER" with its defaults and
+Input \`docs/sample/shaft.wrl\` as cadlod's importer reads it; both methods are asked to
+remove 90 % of its faces: MeshLab's stock "$STOCK_FILTER" with its defaults and
 TargetPerc = 0.1; cadlod: $CAD_ROUTE.
 Pictures: OpenSceneGraph, per-vertex normals recomputed with a 30° crease angle for all
-three meshes, one matte material.
+three meshes, one matte material; the wireframe is a close-up of the step from the 14 mm
+to the 18 mm section.
 
 ![shaded](img/paper-fig6-shaded.png)
 
 ![wireframe](img/paper-fig6-wire.png)
 
-| mesh | triangles | of which zero-area | compactness mean | p5 | below 0.1 | below 0.3 | Hausdorff max to original (% diag) | mean (% diag) |
+| mesh | triangles | of which zero-area | compactness mean | p5 | below 0.1 | below 0.3 | Hausdorff max to the original (% diag) | mean (% diag) |
 |---|---|---|---|---|---|---|---|---|
 $(compactness_row original "$e1/original")
 $(compactness_row "MeshLab QEM" "$e1/stock")
 $(compactness_row cadlod "$e1/cadlod")
 
+$(reduction_note "MeshLab QEM" "$e1/stock" "$e1/original")
+$(reduction_note cadlod "$e1/cadlod" "$e1/original")
+
 Compactness is Guéziec's 4√3·A/(l0²+l1²+l2²) (1 = equilateral); the Hausdorff distance is
-symmetric, sampled on every vertex plus as many area-uniform points per side as the original
-has faces (\`filter_cadlod/core/hausdorff.h\`), in model units (mm).
+symmetric, sampled on every vertex plus as many area-uniform points per side as the input
+has faces (\`filter_cadlod/core/hausdorff.h\`), in model units (mm), as a share of the
+bounding-box diagonal in brackets.
 
 ![compactness histogram](img/paper-fig6-compactness.png)
 
-$(reduction_notes "$e1")
-
 ## Experiment 2 (Table 1): the assembly at 0/50/60/70/80/90 % reduction
 
-Input \`docs/sample/cad_assembly.wrl.gz\`; levels: $LOD_ROUTE. Each level alone
-is written as its own \`.flt\` by cadlod's OpenFlight exporter (meshlabserver, PLY level to
-\`.flt\`; parts become Objects by face color), the whole set as one \`.flt\` with LOD records.
+Input \`docs/sample/cad_assembly.wrl.gz\` (level 0). Each level is made from the original at
+its reduction by $LEVEL_ROUTE, and written alone as its own \`.flt\` by cadlod's OpenFlight
+exporter (meshlabserver, PLY to \`.flt\`; parts become Objects by face color). The whole LOD
+set: $SET_ROUTE.
 Load time: OpenSceneGraph \`readNodeFile\` wall clock (plugin preloaded), median of 5 fresh
 processes. Frame rate: \`osg_render\`, ${FRAMES} frames in a 640×480 window along one orbit whose
 distance grows geometrically from $(printf %.0f "$PATH_NEAR") to $(printf %.0f "$PATH_FAR") model units (the whole
 set's LOD ranges switch along it), the same path for every file, median of $RUNS runs.
+Triangles are the faces of each level's mesh.
 Ratios are against level 0; the paper's ratios are in brackets (paper Table 1: triangles
 47512/23189/8852/6189/4339/4672, fps 66/79/83/95/102/117, load 0.53/0.47/0.31/0.26/0.19/0.11 s,
 6.4/3.7/2.3/2.0/1.3/0.75 MB).
@@ -354,6 +405,8 @@ LOD ranges of the whole set as OpenSceneGraph reads them, and how many frames of
 path each level was the visible one:
 
 $(lod_ranges)
+
+$(set_note)
 
 ## Reproduce
 
