@@ -33,6 +33,32 @@ vcg::Color4b toColor(const std::array<float, 4>& c)
     return vcg::Color4b(b(c[0]), b(c[1]), b(c[2]), b(c[3]));
 }
 
+// Index of `texture` in the mesh's texture list (added if new); -1 for none.
+short textureIndexOf(CMeshO& m, const std::string& texture)
+{
+    if (texture.empty()) return -1;
+    auto it = std::find(m.textures.begin(), m.textures.end(), texture);
+    if (it != m.textures.end()) return short(it - m.textures.begin());
+    m.textures.push_back(texture);
+    return short(m.textures.size() - 1);
+}
+
+void setWedgeTexCoord(CFaceO& f, int k, const vrml::Part& part, uint32_t vertex, short textureIndex)
+{
+    if (part.texCoords.empty()) {
+        f.WT(k) = vcg::TexCoord2f(0, 0);
+        f.WT(k).N() = -1;
+        return;
+    }
+    f.WT(k) = vcg::TexCoord2f(part.texCoords[vertex][0], part.texCoords[vertex][1]);
+    f.WT(k).N() = textureIndex;
+}
+
+bool hasTexCoords(const vrml::Scene& scene)
+{
+    return std::any_of(scene.parts.begin(), scene.parts.end(), [](const vrml::Part& p) { return !p.texCoords.empty(); });
+}
+
 // Moves the scene into `m` (each part's arrays are freed once copied, to keep the peak
 // memory low); with `welding`, coincident vertices become one vertex whose normal is the
 // normalized sum of theirs (the first one's color wins).
@@ -48,6 +74,7 @@ void moveScene(vrml::Scene& scene, const vrml::Welding* welding, CMeshO& m, vcg:
     table.clear();
     size_t sceneVertex = 0, done = 0;
     const size_t triangleCount = scene.triangleCount();
+    const bool wedgeTexCoords = vcg::tri::HasPerWedgeTexCoord(m);
     std::vector<CVertexO*> partVertex;
     for (size_t p = 0; p < scene.parts.size(); ++p) {
         vrml::Part& part = scene.parts[p];
@@ -70,8 +97,13 @@ void moveScene(vrml::Scene& scene, const vrml::Welding* welding, CMeshO& m, vcg:
             v.N() = normal;
             v.C() = part.colors.empty() ? partColor : toColor(part.colors[i]);
         }
+        const short textureIndex = textureIndexOf(m, part.texture);
         for (size_t t = 0; t < part.triangleCount(); ++t, ++fi) {
-            for (int k = 0; k < 3; ++k) fi->V(k) = partVertex[part.triangles[3 * t + size_t(k)]];
+            for (int k = 0; k < 3; ++k) {
+                const uint32_t local = part.triangles[3 * t + size_t(k)];
+                fi->V(k) = partVertex[local];
+                if (wedgeTexCoords) setWedgeTexCoord(*fi, k, part, local, textureIndex);
+            }
             fi->C() = part.faceColors.empty() ? partColor : toColor(part.faceColors[t]);
             partOf[fi] = int(p);
         }
@@ -148,6 +180,7 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     const size_t sceneVertices = scene.vertexCount();
     const qint64 parsedMs = timer.elapsed();
     mask = vcg::tri::io::Mask::IOM_VERTNORMAL | vcg::tri::io::Mask::IOM_VERTCOLOR | vcg::tri::io::Mask::IOM_FACECOLOR;
+    if (hasTexCoords(scene)) mask |= vcg::tri::io::Mask::IOM_WEDGTEXCOORD;
     m.Enable(mask);
     const bool merge = !par.hasParameter(kMergeVertices) || par.getBool(kMergeVertices);
     const float tolerance = par.hasParameter(kMergeTolerance) ? par.getFloat(kMergeTolerance) : 0.0f;

@@ -32,10 +32,12 @@ struct EvalContext {
                        const Owner& owner)> loadInline;
 
     Owner newOwner(const std::string& name) { return {nextOwnerId++, name}; }
-    Part& part(const Owner& owner, const std::array<float, 4>& color);
+    Part& part(const Owner& owner, const std::array<float, 4>& color, const std::string& texture = {});
+    // The first texture url that exists relative to baseDir; "" (and a warning) if none.
+    std::string resolveTexture(const std::vector<std::string>& urls, const std::string& where);
 
     int nextOwnerId = 0;
-    std::map<std::tuple<int, float, float, float, float>, size_t> partIndex;
+    std::map<std::tuple<int, float, float, float, float, std::string>, size_t> partIndex;
 };
 
 void evaluateVrml97(const std::vector<NodePtr>& roots, const Mat4& world, const Owner& owner, const std::string& path,

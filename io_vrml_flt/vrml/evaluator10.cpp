@@ -19,6 +19,7 @@ struct State {
     const std::vector<float>* texCoords = nullptr;
     const std::vector<float>* diffuse = nullptr;
     const std::vector<float>* transparency = nullptr;
+    std::string texture;
     std::string normalBinding = "DEFAULT";
     std::string materialBinding = "OVERALL";
     bool ccw = true;
@@ -29,7 +30,7 @@ struct State {
 const std::set<std::string>& ignoredNodeTypes()
 {
     static const std::set<std::string> types{"Info", "PerspectiveCamera", "OrthographicCamera", "DirectionalLight",
-                                             "PointLight", "SpotLight", "Texture2", "Texture2Transform", "FontStyle",
+                                             "PointLight", "SpotLight", "Texture2Transform", "FontStyle",
                                              "AsciiText", "Label", "Complexity", "DrawStyle", "LightModel",
                                              "Environment", "Units"};
     return types;
@@ -134,7 +135,10 @@ private:
         } else if (t == "Coordinate3") s.coords = floatsField(n, "point");
         else if (t == "Normal") s.normals = floatsField(n, "vector");
         else if (t == "TextureCoordinate2") s.texCoords = floatsField(n, "point");
-        else if (t == "NormalBinding") s.normalBinding = wordField(n, "value", "DEFAULT");
+        else if (t == "Texture2") {
+            const FieldValue* file = n.field("filename");
+            s.texture = file && !file->strings.empty() ? ctx_.resolveTexture(file->strings, n.where) : std::string();
+        } else if (t == "NormalBinding") s.normalBinding = wordField(n, "value", "DEFAULT");
         else if (t == "MaterialBinding") s.materialBinding = wordField(n, "value", "OVERALL");
         else if (t == "Material") {
             s.diffuse = floatsField(n, "diffuseColor");
@@ -191,7 +195,7 @@ private:
         if (t != "IndexedFaceSet" && t != "Cube" && t != "Sphere" && t != "Cylinder" && t != "Cone") return false;
         ++ctx_.scene.stats.shapes;
         const std::vector<float> materials = materialsRgba(s);
-        Part& part = ctx_.part(owner.id < 0 ? ctx_.newOwner(path) : owner, firstMaterial(materials));
+        Part& part = ctx_.part(owner.id < 0 ? ctx_.newOwner(path) : owner, firstMaterial(materials), s.texture);
         const size_t before = part.triangleCount();
         emitShape(n, s, materials, part);
         countShapeTriangles(t, before, part, ctx_.scene.stats);

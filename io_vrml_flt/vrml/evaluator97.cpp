@@ -129,6 +129,14 @@ private:
         return color;
     }
 
+    std::string texture(const Node& shape)
+    {
+        const NodePtr appearance = nodeField(shape, "appearance");
+        const NodePtr texture = appearance ? nodeField(*appearance, "texture") : nullptr;
+        if (!texture || texture->type != "ImageTexture") return {};
+        return ctx_.resolveTexture(stringsField(*texture, "url"), texture->where);
+    }
+
     void shape(const Node& node, const Mat4& world, const Owner& owner)
     {
         const NodePtr geometry = nodeField(node, "geometry");
@@ -143,7 +151,7 @@ private:
             ++ctx_.scene.stats.pointSets;
             return;
         }
-        Part& part = ctx_.part(owner, materialColor(node));
+        Part& part = ctx_.part(owner, materialColor(node), texture(node));
         const size_t before = part.triangleCount();
         emitGeometry(*geometry, world, part);
         countShapeTriangles(type, before, part, ctx_.scene.stats);

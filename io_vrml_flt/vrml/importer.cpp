@@ -12,16 +12,31 @@
 
 namespace cadlod::vrml {
 
-Part& EvalContext::part(const Owner& owner, const std::array<float, 4>& color)
+Part& EvalContext::part(const Owner& owner, const std::array<float, 4>& color, const std::string& texture)
 {
-    const auto key = std::make_tuple(owner.id, color[0], color[1], color[2], color[3]);
+    const auto key = std::make_tuple(owner.id, color[0], color[1], color[2], color[3], texture);
     auto it = partIndex.find(key);
     if (it != partIndex.end()) return scene.parts[it->second];
     partIndex[key] = scene.parts.size();
     Part& p = scene.parts.emplace_back();
     p.name = owner.name;
     p.color = color;
+    p.texture = texture;
     return p;
+}
+
+std::string EvalContext::resolveTexture(const std::vector<std::string>& urls, const std::string& where)
+{
+    for (const std::string& url : urls) {
+        std::string path = url.rfind("file://", 0) == 0 ? url.substr(7) : url;
+        if (path.find("://") != std::string::npos) continue;
+        const std::filesystem::path p(path);
+        const std::filesystem::path full = p.is_absolute() ? p : std::filesystem::path(baseDir) / p;
+        std::error_code ec;
+        if (std::filesystem::exists(full, ec)) return full.lexically_normal().string();
+    }
+    if (!urls.empty()) scene.diagnostics.warn("missing texture", where, "texture not found: " + urls.front());
+    return {};
 }
 
 namespace {

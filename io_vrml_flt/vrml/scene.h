@@ -23,6 +23,7 @@ struct Part {
     std::vector<Vec3f> normals;       // empty or one per position
     std::vector<Rgba8> colors;        // empty or one per position
     std::vector<Vec2f> texCoords;     // empty or one per position
+    std::string texture;              // image file (resolved path) or empty
     std::vector<uint32_t> triangles;  // 3 indices per triangle, counter-clockwise front
     std::vector<Rgba8> faceColors;    // empty or one per triangle
 

@@ -128,3 +128,24 @@ TEST_F(VrmlAdapter, UnreadableFileFailsWithMessage)
     EXPECT_TRUE(o.error.contains("not a VRML file")) << o.error.toStdString();
     EXPECT_TRUE(o.error.contains("x.wrl"));
 }
+
+TEST_F(VrmlAdapter, TextureCoordinatesBecomeWedgeTexCoordsWithTheTexture)
+{
+    write("wood.png", "not really a png");
+    const std::string text = R"(#VRML V2.0 utf8
+Shape { appearance Appearance { texture ImageTexture { url "wood.png" } }
+  geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 0, 0 1 0 ] } coordIndex [ 0 1 2 ]
+    texCoord TextureCoordinate { point [ 0 0, 1 0, 0 1 ] } } }
+Shape { appearance Appearance { texture ImageTexture { url "gone.png" } } geometry Box {} }
+)";
+    const Opened o = open(write("tex.wrl", text));
+    ASSERT_TRUE(o.ok);
+    EXPECT_TRUE(o.mask & vcg::tri::io::Mask::IOM_WEDGTEXCOORD);
+    ASSERT_EQ(m_->cm.textures.size(), 1u);
+    EXPECT_NE(m_->cm.textures[0].find("wood.png"), std::string::npos);
+    const CFaceO& f = m_->cm.face[0];
+    EXPECT_EQ(f.cWT(1).N(), 0);
+    EXPECT_FLOAT_EQ(f.cWT(1).U() + f.cWT(2).U(), 1.0f);
+    EXPECT_FLOAT_EQ(f.cWT(1).V() + f.cWT(2).V(), 1.0f);
+    EXPECT_EQ(m_->cm.face[1].cWT(0).N(), -1);  // the box: no texture (missing file)
+}
