@@ -191,16 +191,17 @@ OwnedFaceSet makeExtrusion(const ExtrusionSpec& spec)
     const auto at = [&](size_t i, size_t j) { return int32_t(i * sections + j); };
     for (size_t i = 0; i + 1 < spines; ++i)
         for (size_t j = 0; j + 1 < sections; ++j)
-            addFace(f, {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+            addFace(f, {at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i + 1, j)});
     const bool closedSection = spec.crossSection[0] == spec.crossSection[2 * sections - 2] &&
                                spec.crossSection[1] == spec.crossSection[2 * sections - 1];
     const size_t capCount = closedSection ? sections - 1 : sections;
+    // With the spec's default (clockwise seen from +y) cross-section every face points out.
     if (spec.beginCap) {
-        for (size_t j = 0; j < capCount; ++j) f.coordIndex.push_back(at(0, j));
+        for (size_t j = capCount; j-- > 0;) f.coordIndex.push_back(at(0, j));
         f.coordIndex.push_back(-1);
     }
     if (spec.endCap) {
-        for (size_t j = capCount; j-- > 0;) f.coordIndex.push_back(at(spines - 1, j));
+        for (size_t j = 0; j < capCount; ++j) f.coordIndex.push_back(at(spines - 1, j));
         f.coordIndex.push_back(-1);
     }
     return f;

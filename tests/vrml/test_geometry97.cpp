@@ -216,3 +216,30 @@ Shape { geometry Text { string "x" } }
     EXPECT_EQ(s.stats.pointSets, 1u);
     EXPECT_EQ(s.diagnostics.count("unsupported geometry"), 1);
 }
+
+TEST(Vrml97Primitives, ClosedPrimitivesFaceOutwards)
+{
+    const char* shapes[] = {
+        "Box { size 2 2 2 }", "Sphere {}", "Cylinder {}", "Cone {}",
+        "Extrusion { crossSection [ 1 1, 1 -1, -1 -1, -1 1, 1 1 ] spine [ 0 -1 0, 0 1 0 ] }",
+        "Extrusion { }"};
+    for (const char* shape : shapes) {
+        SCOPED_TRACE(shape);
+        const Scene s = load(std::string("#VRML V2.0 utf8\nShape { geometry ") + shape + " }\n");
+        ASSERT_GT(s.triangleCount(), 0u);
+        Vec3f center{0, 0, 0};
+        size_t n = 0;
+        for (const Part& p : s.parts)
+            for (const Vec3f& v : p.positions) {
+                for (int k = 0; k < 3; ++k) center[size_t(k)] += v[size_t(k)];
+                ++n;
+            }
+        for (float& c : center) c /= float(n);
+        for (const auto& t : triangles(s)) {
+            const Vec3f nrm = triangleNormal(t);
+            float out = 0;
+            for (int k = 0; k < 3; ++k) out += nrm[size_t(k)] * ((t[0][size_t(k)] + t[1][size_t(k)] + t[2][size_t(k)]) / 3 - center[size_t(k)]);
+            EXPECT_GT(out, 0);
+        }
+    }
+}
