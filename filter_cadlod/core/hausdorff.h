@@ -20,6 +20,7 @@ namespace cadlod {
 struct HausdorffStats {
     double max = 0.0;   // model units
     double mean = 0.0;
+    double rms = 0.0;
     std::size_t samples = 0;
 };
 
@@ -32,6 +33,13 @@ struct SymmetricHausdorff {
     {
         const std::size_t n = forward.samples + backward.samples;
         return n ? (forward.mean * forward.samples + backward.mean * backward.samples) / n : 0.0;
+    }
+    double rms() const
+    {
+        const std::size_t n = forward.samples + backward.samples;
+        return n ? std::sqrt((forward.rms * forward.rms * forward.samples +
+                              backward.rms * backward.rms * backward.samples) / n)
+                 : 0.0;
     }
     double maxFraction() const { return diagonal > 0 ? max() / diagonal : 0.0; }
     double meanFraction() const { return diagonal > 0 ? mean() / diagonal : 0.0; }
@@ -172,8 +180,11 @@ private:
 }  // namespace detail
 
 // Distances from `faceSamples` area-uniform points on `from` (plus its vertices) to `to`.
+// `vertexDistances`, when given, receives the distance of every vertex of `from` (indexed
+// like from.vert; deleted vertices get 0).
 template <class MeshFrom, class MeshTo>
-HausdorffStats oneSidedHausdorff(MeshFrom& from, MeshTo& to, std::size_t faceSamples, unsigned seed = 1)
+HausdorffStats oneSidedHausdorff(MeshFrom& from, MeshTo& to, std::size_t faceSamples, unsigned seed = 1,
+                                 std::vector<double>* vertexDistances = nullptr)
 {
     HausdorffStats s;
     const auto sources = detail::liveFaces(from);
@@ -181,18 +192,25 @@ HausdorffStats oneSidedHausdorff(MeshFrom& from, MeshTo& to, std::size_t faceSam
     if (closest.empty() || sources.empty())
         return s;
 
-    double sum = 0.0;
+    double sum = 0.0, sumSquares = 0.0;
     auto measure = [&](const vcg::Point3d& p) {
         double d = 0;
         closest.find(p, d);
         s.max = std::max(s.max, d);
         sum += d;
+        sumSquares += d * d;
         ++s.samples;
+        return d;
     };
 
-    for (auto& v : from.vert)
-        if (!v.IsD())
-            measure(vcg::Point3d::Construct(v.cP()));
+    if (vertexDistances)
+        vertexDistances->assign(from.vert.size(), 0.0);
+    for (std::size_t i = 0; i < from.vert.size(); ++i)
+        if (!from.vert[i].IsD()) {
+            const double d = measure(vcg::Point3d::Construct(from.vert[i].cP()));
+            if (vertexDistances)
+                (*vertexDistances)[i] = d;
+        }
 
     std::vector<double> cumulativeArea;
     cumulativeArea.reserve(sources.size());
@@ -220,7 +238,26 @@ HausdorffStats oneSidedHausdorff(MeshFrom& from, MeshTo& to, std::size_t faceSam
         measure(a + (b - a) * u + (c - a) * v);
     }
     s.mean = s.samples ? sum / double(s.samples) : 0.0;
+    s.rms = s.samples ? std::sqrt(sumSquares / double(s.samples)) : 0.0;
     return s;
+}
+
+// Bounding box of the live vertices, in double (null when there are none).
+template <class MeshType>
+vcg::Box3d liveVertexBox(const MeshType& m)
+{
+    vcg::Box3d box;
+    for (const auto& v : m.vert)
+        if (!v.IsD())
+            box.Add(vcg::Point3d::Construct(v.cP()));
+    return box;
+}
+
+template <class MeshType>
+double liveDiagonal(const MeshType& m)
+{
+    const vcg::Box3d box = liveVertexBox(m);
+    return box.IsNull() ? 0.0 : box.Diag();
 }
 
 // Both directions; fractions are of A's bounding-box diagonal.
@@ -230,11 +267,7 @@ SymmetricHausdorff symmetricHausdorff(MeshA& a, MeshB& b, std::size_t faceSample
     SymmetricHausdorff h;
     h.forward = oneSidedHausdorff(a, b, faceSamplesPerSide, 1);
     h.backward = oneSidedHausdorff(b, a, faceSamplesPerSide, 2);
-    vcg::Box3d box;
-    for (auto& v : a.vert)
-        if (!v.IsD())
-            box.Add(vcg::Point3d::Construct(v.cP()));
-    h.diagonal = box.IsNull() ? 0.0 : box.Diag();
+    h.diagonal = liveDiagonal(a);
     return h;
 }
 

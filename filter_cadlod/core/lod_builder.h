@@ -57,15 +57,6 @@ void copyWithParts(MeshType& to, MeshType& from)
     vcg::tri::Append<MeshType, MeshType>::MeshCopy(to, from, false, false);
 }
 
-template <class MeshType>
-vcg::Box3d liveVertexBox(const MeshType& m)
-{
-    vcg::Box3d box;
-    for (const auto& v : m.vert)
-        if (!v.IsD())
-            box.Add(vcg::Point3d::Construct(v.cP()));
-    return box;
-}
 
 // Drops the levels selectUsefulLevels rejects from `result` and `meshes` (parallel to
 // result.levels), records them, and renumbers the rest.
@@ -122,7 +113,7 @@ LodSetResult buildLodSet(MeshType& original, const LodSetOptions& options,
     LodLevel level0;
     level0.setId = options.setId;
     level0.faces = original.fn;
-    const vcg::Box3d box = detail::liveVertexBox(original);
+    const vcg::Box3d box = liveVertexBox(original);
     if (!box.IsNull())
         level0.center = {box.Center()[0], box.Center()[1], box.Center()[2]};
     result.modelSize = box.IsNull() ? 0.0 : box.Diag();
