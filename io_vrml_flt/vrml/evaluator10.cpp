@@ -112,7 +112,7 @@ private:
 
     void traverseSwitch(const Node& node, State& state, const Owner& owner, const std::string& path, int depth)
     {
-        const int which = int(floatField(node, "whichChild", -1));
+        const int which = intField(node, "whichChild", -1);
         if (which == -3) {
             traverseChildren(node, state, owner, path, depth);
         } else if (which >= 0 && size_t(which) < node.children.size()) {

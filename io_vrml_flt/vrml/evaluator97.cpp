@@ -112,7 +112,7 @@ private:
 
     void traverseSwitch(const Node& node, const Mat4& world, const Owner& owner, const std::string& path, int depth)
     {
-        const int which = int(floatField(node, "whichChoice", -1));
+        const int which = intField(node, "whichChoice", -1);
         const std::vector<NodePtr> choices = childNodes(node, nodesField(node, "choice") ? "choice" : "children");
         if (which >= 0 && size_t(which) < choices.size())
             traverse(choices[size_t(which)], world, owner, path + "/Switch", depth + 1);
@@ -221,13 +221,13 @@ private:
     void elevationGrid(const Node& g, const Mat4& world, Part& part)
     {
         const std::vector<float>* heights = floatsField(g, "height");
-        const double xDim = floatField(g, "xDimension", 0), zDim = floatField(g, "zDimension", 0);
-        if (xDim * zDim > double(heights ? heights->size() : 0)) {  // also guards absurd dimensions
+        const int32_t xDim = intField(g, "xDimension", 0), zDim = intField(g, "zDimension", 0);
+        if (double(xDim) * double(zDim) > double(heights ? heights->size() : 0)) {  // also guards absurd sizes
             ctx_.scene.diagnostics.warn("bad ElevationGrid", g.where,
                                         "xDimension x zDimension exceeds the number of heights; grid skipped");
             return;
         }
-        OwnedFaceSet f = makeElevationGrid(int(xDim), int(zDim),
+        OwnedFaceSet f = makeElevationGrid(xDim, zDim,
                                            floatField(g, "xSpacing", 1), floatField(g, "zSpacing", 1),
                                            heights ? *heights : std::vector<float>{});
         FaceSetInput in;

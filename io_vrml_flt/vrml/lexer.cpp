@@ -253,7 +253,8 @@ bool Lexer::readInt(int32_t& value)
     }
     float f = 0;
     if (!readFloat(f)) return false;
-    value = int32_t(f);
+    // Out of the int32 range: an invalid (negative, not -1) index, reported where it is used.
+    value = f >= -2147483648.0f && f < 2147483648.0f ? int32_t(f) : INT32_MIN;
     return true;
 }
 

@@ -119,6 +119,12 @@ float floatField(const Node& n, const char* name, float fallback)
     return f && !f->empty() ? (*f)[0] : fallback;
 }
 
+int32_t intField(const Node& n, const char* name, int32_t fallback)
+{
+    const float f = floatField(n, name, float(fallback));
+    return f >= -2147483648.0f && f < 2147483648.0f ? int32_t(f) : fallback;
+}
+
 bool boolField(const Node& n, const char* name, bool fallback)
 {
     const FieldValue* v = n.field(name);

@@ -17,6 +17,8 @@ Mat4 transformMatrix(const TransformFields& t);
 // Field readers shared by both evaluators (missing or short fields give `fallback`).
 Vec3 vec3Field(const Node& n, const char* name, Vec3 fallback);
 float floatField(const Node& n, const char* name, float fallback);
+// SFInt32 read as a number; values outside the int32 range give `fallback`.
+int32_t intField(const Node& n, const char* name, int32_t fallback);
 bool boolField(const Node& n, const char* name, bool fallback);
 std::string wordField(const Node& n, const char* name, const std::string& fallback);
 // SFRotation: axis, angle.
