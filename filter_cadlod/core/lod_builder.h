@@ -107,6 +107,7 @@ LodSetResult buildLodSet(MeshType& original, const LodSetOptions& options,
         result.error = "level list: " + plan.error;
         return result;
     }
+    result.warnings = plan.warnings;
     const std::size_t samples = options.hausdorffSamples ? options.hausdorffSamples : std::size_t(original.fn);
     std::vector<MeshType*> meshes{&original};
 

@@ -18,19 +18,25 @@ namespace cadlod {
 enum class LevelSpec { ReductionPercent, FaceCount };
 
 struct LevelPlan {
-    std::vector<int> targetFaces;  // one per simplified level (level 1..n)
-    std::string error;             // non-empty when the list cannot be used
+    std::vector<int> targetFaces;       // one per simplified level (level 1..n)
+    std::vector<std::string> warnings;  // levels left out because the mesh is too small for them
+    std::string error;                  // non-empty when the list cannot be used
     bool ok() const { return error.empty(); }
 };
 
 // Parses a level list such as "50 60 70 80 90" (reductions in %, as the paper) or
-// "20000 8000 2000" (face counts). Levels must get strictly coarser.
+// "20000 8000 2000" (face counts). The values must get strictly coarser; a level that
+// would not have fewer faces than the one before it on this mesh (a face count above the
+// input, or a small mesh where two reductions round to the same count) is left out with a
+// warning, so one list serves a whole batch of parts. An empty plan is valid: level 0 only.
 inline LevelPlan planLevels(const std::string& list, LevelSpec spec, int inputFaces)
 {
     LevelPlan plan;
     std::istringstream in(list);
     std::string token;
-    int previous = inputFaces;
+    int previousFaces = inputFaces;
+    double previousValue = spec == LevelSpec::ReductionPercent ? 0.0 : std::numeric_limits<double>::infinity();
+    bool any = false;
     while (in >> token) {
         while (!token.empty() && (token.back() == '%' || token.back() == ','))
             token.pop_back();
@@ -40,6 +46,7 @@ inline LevelPlan planLevels(const std::string& list, LevelSpec spec, int inputFa
             plan.error = "'" + token + "' is not a number";
             return plan;
         }
+        any = true;
         int faces = 0;
         if (spec == LevelSpec::ReductionPercent) {
             if (value <= 0.0 || value >= 100.0) {
@@ -54,16 +61,23 @@ inline LevelPlan planLevels(const std::string& list, LevelSpec spec, int inputFa
             }
             faces = int(value);
         }
-        faces = std::max(faces, 1);
-        if (faces >= previous) {
-            plan.error = "level '" + token + "' is not coarser than the level before it (" +
-                         std::to_string(faces) + " >= " + std::to_string(previous) + " faces)";
+        const bool coarser = spec == LevelSpec::ReductionPercent ? value > previousValue : value < previousValue;
+        if (!coarser) {
+            plan.error = "level '" + token + "' is not coarser than the level before it";
             return plan;
         }
+        previousValue = value;
+        faces = std::max(faces, 1);
+        if (faces >= previousFaces) {
+            plan.warnings.push_back("level '" + token + "' left out: it would keep " + std::to_string(faces) +
+                                    " faces, not fewer than the " + std::to_string(previousFaces) +
+                                    " of the level before it");
+            continue;
+        }
         plan.targetFaces.push_back(faces);
-        previous = faces;
+        previousFaces = faces;
     }
-    if (plan.targetFaces.empty())
+    if (!any)
         plan.error = "the level list is empty";
     return plan;
 }

@@ -163,6 +163,26 @@ TEST(LodBuilder, LevelsThatWouldNeverBeShownAreDroppedAndRenumbered)
     EXPECT_LT(b.result.levels[0].switchOut, b.result.levels[0].switchIn);
 }
 
+TEST(LodBuilder, ASingleTriangleIsASetOfOneLevelWithWarnings)
+{
+    Built b;
+    auto v = vcg::tri::Allocator<TestMesh>::AddVertices(b.original, 3);
+    v[1].P() = vcg::Point3f(1, 0, 0);
+    v[2].P() = vcg::Point3f(0, 1, 0);
+    vcg::tri::Allocator<TestMesh>::AddFace(b.original, &v[0], &v[1], &v[2]);
+    vcg::tri::UpdateTopology<TestMesh>::VertexFace(b.original);
+    b.result = buildLodSet<TestMesh>(b.original, LodSetOptions{}, [&b](int) -> TestMesh& {
+        b.levels.emplace_back();
+        return b.levels.back();
+    });
+    ASSERT_TRUE(b.result.ok()) << b.result.error;
+    EXPECT_TRUE(b.levels.empty());
+    ASSERT_EQ(b.result.levels.size(), 1u);
+    EXPECT_EQ(b.result.warnings.size(), 5u);
+    ASSERT_TRUE(hasLodLevel(b.original));
+    EXPECT_LT(lodLevelHandle(b.original)().switchOut, lodLevelHandle(b.original)().switchIn);
+}
+
 TEST(LodBuilder, BadLevelListIsAClearErrorAndBuildsNothing)
 {
     Built b;

@@ -34,11 +34,31 @@ TEST(LodPlan, RejectsBadLists)
     EXPECT_FALSE(planLevels("0", LevelSpec::ReductionPercent, 100).ok());
     EXPECT_FALSE(planLevels("100", LevelSpec::ReductionPercent, 100).ok());
     EXPECT_FALSE(planLevels("70 50", LevelSpec::ReductionPercent, 100).ok());  // not coarser
-    EXPECT_FALSE(planLevels("500", LevelSpec::FaceCount, 100).ok());           // above input
+    EXPECT_FALSE(planLevels("100 500", LevelSpec::FaceCount, 1000).ok());      // not coarser
     EXPECT_FALSE(planLevels("10.5", LevelSpec::FaceCount, 100).ok());
     const LevelPlan p = planLevels("60 60", LevelSpec::ReductionPercent, 1000);
     ASSERT_FALSE(p.ok());
+    EXPECT_TRUE(p.targetFaces.empty() || p.targetFaces.size() == 1);
     EXPECT_NE(p.error.find("not coarser"), std::string::npos);
+}
+
+TEST(LodPlan, LevelsTheMeshIsTooSmallForAreLeftOutWithAWarning)
+{
+    LevelPlan p = planLevels("20000 8000 50", LevelSpec::FaceCount, 5000);
+    ASSERT_TRUE(p.ok()) << p.error;
+    EXPECT_EQ(p.targetFaces, std::vector<int>{50});
+    ASSERT_EQ(p.warnings.size(), 2u);
+    EXPECT_NE(p.warnings[0].find("'20000' left out"), std::string::npos) << p.warnings[0];
+
+    p = planLevels("50 60 70 80 90", LevelSpec::ReductionPercent, 3);  // 2, 1, 1, 1, 0->1
+    ASSERT_TRUE(p.ok()) << p.error;
+    EXPECT_EQ(p.targetFaces, (std::vector<int>{2, 1}));
+    EXPECT_EQ(p.warnings.size(), 3u);
+
+    p = planLevels("50", LevelSpec::ReductionPercent, 1);  // a single triangle: level 0 only
+    ASSERT_TRUE(p.ok()) << p.error;
+    EXPECT_TRUE(p.targetFaces.empty());
+    EXPECT_EQ(p.warnings.size(), 1u);
 }
 
 TEST(LodPlan, TinyMeshesKeepAtLeastOneFace)
