@@ -255,3 +255,16 @@ TEST(Reader, ReadsOpenSceneGraphOutput)
     EXPECT_LT(d.position, 1e-5f);
     EXPECT_LT(d.normal, 1e-5f);
 }
+
+TEST(Reader, FinestLevelIsTheNearestRangeWhateverTheFileOrder)
+{
+    LodModel model = threeLevelModel();
+    std::swap(model.levels[0], model.levels[2]);  // coarsest first in the file
+    LodModel back;
+    std::string error;
+    ASSERT_TRUE(readBytes(writeBytes(model), back, error)) << error;
+    ASSERT_EQ(back.levels.size(), 3u);
+    EXPECT_EQ(finestLevel(back), 2u);
+    EXPECT_EQ(back.levels[2].name, "lod_level_0");
+    EXPECT_EQ(back.levels[2].triangleCount(), threeLevelModel().levels[0].triangleCount());
+}

@@ -271,3 +271,19 @@ TEST(WriterLayout, RejectsBadIndices)
     EXPECT_NE(error.find("part 1"), std::string::npos) << error;
     EXPECT_NE(error.find("999"), std::string::npos) << error;
 }
+
+TEST(WriterLayout, ProgressRisesToOneHundred)
+{
+    for (GeometryRecords mode : {GeometryRecords::Faces, GeometryRecords::Meshes}) {
+        std::vector<int> seen;
+        WriteOptions o;
+        o.geometry = mode;
+        o.progress = [&seen](int percent) { seen.push_back(percent); };
+        Bytes b;
+        std::string error;
+        ASSERT_TRUE(writeOpenFlight(threeLevelModel(), o, b, error)) << error;
+        ASSERT_FALSE(seen.empty());
+        EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+        EXPECT_EQ(seen.back(), 100);
+    }
+}
