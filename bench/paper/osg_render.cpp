@@ -124,6 +124,15 @@ double peakRssKb()
     return double(u.ru_maxrss);
 }
 
+// CPU time of the whole process (Mesa's software renderer draws in threads of this
+// process), steadier than wall time on a busy machine.
+double cpuSeconds()
+{
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -401,6 +410,7 @@ int measureFrameRate(Options& o, osg::Node* model, const osg::BoundingSphere& bs
         viewer->frame();
     }
     std::vector<int> framesAtLevel(levels.size() + 1, 0);
+    const double cpuStart = cpuSeconds();
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < o.frames; ++i) {
         const double d = pathDistance(o, i);
@@ -410,8 +420,10 @@ int measureFrameRate(Options& o, osg::Node* model, const osg::BoundingSphere& bs
             ++framesAtLevel[std::size_t(levelAt(levels, d) + 1)];
     }
     const double seconds = secondsSince(start);
+    const double cpu = cpuSeconds() - cpuStart;
     std::printf("path_near %.6g\npath_far %.6g\nframes %d\nrender_seconds %.4f\nfps %.2f\n", o.nearDistance,
                 o.farDistance, o.frames, seconds, o.frames / seconds);
+    std::printf("cpu_seconds %.4f\nfps_cpu %.2f\n", cpu, cpu > 0 ? o.frames / cpu : 0.0);
     if (o.level < 0)
         for (std::size_t k = 0; k < levels.size(); ++k)
             std::printf("frames_at_level %zu %d\n", k, framesAtLevel[k + 1]);
