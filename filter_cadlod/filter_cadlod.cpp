@@ -2,12 +2,13 @@
 
 #include "core/compactness.h"
 #include "lod_set_filter.h"
+#include "simplify_filter.h"
 
 #include <vcg/complex/algorithms/stat.h>
 
 FilterCadLodPlugin::FilterCadLodPlugin()
 {
-    typeList << FP_COMPACTNESS << FP_LOD_SET;
+    typeList << FP_COMPACTNESS << FP_CAD_SIMPLIFY << FP_LOD_SET;
     for (FilterIDType t : types())
         actionList << new QAction(filterName(t), this);
 }
@@ -19,6 +20,7 @@ QString FilterCadLodPlugin::filterName(FilterIDType filter) const
     switch (filter) {
     case FP_COMPACTNESS: return "Compute Triangle Compactness";
     case FP_LOD_SET: return "Generate CAD LOD Set";
+    case FP_CAD_SIMPLIFY: return "Simplification: CAD Quadric Edge Collapse (compactness)";
     }
     return {};
 }
@@ -32,6 +34,14 @@ QString FilterCadLodPlugin::filterInfo(FilterIDType filter) const
                "triangle, towards 0 for slivers, 0 for zero-area faces (Gu&eacute;ziec). "
                "Use the quality mapper or the face quality histogram to see where slivers are. "
                "The log reports mean, min, 5th percentile and the share of faces below 0.1 and 0.3.";
+    case FP_CAD_SIMPLIFY:
+        return "Quadric edge collapse for CAD tessellations (Tang et al. 2015): for each edge the "
+               "ends, points along it and the quadric optimum are tried; placements of nearly equal "
+               "quadric cost are tied and the one giving the most compact triangles wins. Creases "
+               "(feature angle), boundaries and CAD part borders keep their vertices, faces never "
+               "fold, and a minimum compactness is enforced. Stops at a face count, a reduction "
+               "percentage or a maximum error (fraction of the bbox diagonal), whichever comes first. "
+               "The log reports faces, time, compactness before/after and the largest collapse error.";
     case FP_LOD_SET:
         return "Builds levels of detail of the current layer with the CAD Quadric Edge Collapse: "
                "one new layer per level (by default 50, 60, 70, 80 and 90 % fewer faces, as Tang "
@@ -49,6 +59,7 @@ MeshFilterInterface::FilterClass FilterCadLodPlugin::getClass(QAction* action)
     switch (ID(action)) {
     case FP_COMPACTNESS: return FilterClass(Quality | Measure);
     case FP_LOD_SET: return Remeshing;
+    case FP_CAD_SIMPLIFY: return Remeshing;
     }
     return Measure;
 }
@@ -63,6 +74,7 @@ int FilterCadLodPlugin::getRequirements(QAction* action)
     switch (ID(action)) {
     case FP_COMPACTNESS: return MeshModel::MM_FACEQUALITY;
     case FP_LOD_SET: return MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK;
+    case FP_CAD_SIMPLIFY: return MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK;
     }
     return MeshModel::MM_NONE;
 }
@@ -72,6 +84,7 @@ int FilterCadLodPlugin::getPreConditions(QAction* action) const
     switch (ID(action)) {
     case FP_COMPACTNESS: return MeshModel::MM_FACENUMBER;
     case FP_LOD_SET: return MeshModel::MM_FACENUMBER;
+    case FP_CAD_SIMPLIFY: return MeshModel::MM_FACENUMBER;
     }
     return MeshModel::MM_NONE;
 }
@@ -81,6 +94,7 @@ int FilterCadLodPlugin::postCondition(QAction* action) const
     switch (ID(action)) {
     case FP_COMPACTNESS: return MeshModel::MM_FACEQUALITY;
     case FP_LOD_SET: return MeshModel::MM_NONE;  // the original is not changed; levels are new layers
+    case FP_CAD_SIMPLIFY: return MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE;
     }
     return MeshModel::MM_ALL;
 }
@@ -89,6 +103,7 @@ void FilterCadLodPlugin::initParameterSet(QAction* action, MeshModel& m, RichPar
 {
     switch (ID(action)) {
     case FP_LOD_SET: cadlod::lodSetParameters(m, parlst); break;
+    case FP_CAD_SIMPLIFY: cadlod::cadSimplifyParameters(m, parlst); break;
     }
 }
 
@@ -98,6 +113,7 @@ bool FilterCadLodPlugin::applyFilter(QAction* action, MeshDocument& md, const Ri
     switch (ID(action)) {
     case FP_COMPACTNESS: return computeCompactness(*md.mm(), cb);
     case FP_LOD_SET: return cadlod::generateLodSet(*this, md, par, cb, errorMessage);
+    case FP_CAD_SIMPLIFY: return cadlod::cadSimplify(*this, *md.mm(), par, cb, errorMessage);
     }
     errorMessage = "Unknown filter";
     return false;

@@ -12,7 +12,7 @@ class FilterCadLodPlugin : public QObject, public MeshFilterInterface
     Q_INTERFACES(MeshFilterInterface)
 
 public:
-    enum { FP_COMPACTNESS, FP_LOD_SET };
+    enum { FP_COMPACTNESS, FP_LOD_SET, FP_CAD_SIMPLIFY };
 
     FilterCadLodPlugin();
 
