@@ -269,14 +269,20 @@ void writeLocalVertexPool(ByteWriter& w, const std::vector<Vec3d>& positions,
 
 void writeMeshPrimitive(ByteWriter& w, PrimitiveType type, const std::vector<std::uint32_t>& indices)
 {
+    const bool narrow = indices.empty() || *std::max_element(indices.begin(), indices.end()) <= 0xffff;
+    const std::uint16_t indexSize = narrow ? 2 : 4;
     std::vector<std::uint8_t> body;
-    body.reserve(8 + 4 * indices.size());
+    body.reserve(8 + indexSize * indices.size());
     ByteWriter b(body);
     b.i16(static_cast<std::int16_t>(type));
-    b.u16(4);  // index size in bytes
+    b.u16(indexSize);
     b.u32(static_cast<std::uint32_t>(indices.size()));
-    for (std::uint32_t i : indices)
-        b.u32(i);
+    for (std::uint32_t i : indices) {
+        if (narrow)
+            b.u16(static_cast<std::uint16_t>(i));
+        else
+            b.u32(i);
+    }
     writeContinuedRecord(w, opcode::MeshPrimitive, body);
 }
 

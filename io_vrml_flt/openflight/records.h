@@ -89,6 +89,7 @@ void writePop(ByteWriter& w);
 // Variable-length records: longer than one record, they go on in Continuation records.
 void writeLocalVertexPool(ByteWriter& w, const std::vector<Vec3d>& positions,
                           const std::vector<Vec3f>& normals, const std::vector<Vec2f>& uvs);
+// 16-bit indices when every index fits, else 32-bit.
 void writeMeshPrimitive(ByteWriter& w, PrimitiveType type, const std::vector<std::uint32_t>& indices);
 // Body (without the 4-byte header) as `op` plus Continuation records; pads the last one to 4.
 void writeContinuedRecord(ByteWriter& w, std::uint16_t op, const std::vector<std::uint8_t>& body);

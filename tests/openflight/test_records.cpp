@@ -202,11 +202,17 @@ TEST(Records, LocalVertexPoolAndMeshPrimitive)
 
     const Bytes prim = written([&](ByteWriter& w) { writeMeshPrimitive(w, PrimitiveType::TriangleStrip, {0, 1, 2, 2, 3}); });
     EXPECT_EQ(be16(prim, 0), 86);
-    EXPECT_EQ(be16(prim, 2), 12u + 5u * 4u);
+    EXPECT_EQ(be16(prim, 2), 12u + 12u);  // 5 16-bit indices, padded to 4 bytes
     EXPECT_EQ(bei16(prim, 4), 1);
-    EXPECT_EQ(be16(prim, 6), 4);
+    EXPECT_EQ(be16(prim, 6), 2);
     EXPECT_EQ(be32(prim, 8), 5u);
-    EXPECT_EQ(be32(prim, 12 + 4 * 4), 3u);
+    EXPECT_EQ(be16(prim, 12 + 4 * 2), 3u);
+    EXPECT_EQ(be16(prim, 12 + 5 * 2), 0u);  // padding
+
+    const Bytes wide = written([&](ByteWriter& w) { writeMeshPrimitive(w, PrimitiveType::TriangleFan, {0, 70000, 1}); });
+    EXPECT_EQ(be16(wide, 2), 12u + 3u * 4u);
+    EXPECT_EQ(be16(wide, 6), 4);
+    EXPECT_EQ(be32(wide, 12 + 4), 70000u);
 }
 
 TEST(Records, PushPopAndPackedColors)
