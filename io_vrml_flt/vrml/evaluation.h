@@ -6,6 +6,7 @@
 #include "vrml/face_set_emitter.h"
 #include "vrml/importer.h"
 #include "vrml/node.h"
+#include "vrml/primitives.h"
 
 #include <functional>
 #include <map>
@@ -48,8 +49,8 @@ void evaluateVrml10(const std::vector<NodePtr>& roots, const Mat4& world, const 
 // Adds the triangles a shape node added to `part` to the scene's per-source counts.
 void countShapeTriangles(const std::string& geometryType, size_t before, const Part& part, SceneStats& stats);
 
-// Emits an owned face set (primitives) with the given material color.
-void emitOwnedFaceSet(const struct OwnedFaceSet& f, const std::string& where, const Mat4& world, Part& part,
+// Emits the face set a primitive node was turned into.
+void emitOwnedFaceSet(const OwnedFaceSet& f, const std::string& where, const Mat4& world, Part& part,
                       EvalContext& ctx);
 
 }  // namespace cadlod::vrml
