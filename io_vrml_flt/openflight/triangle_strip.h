@@ -1,7 +1,8 @@
-// Triangles as one OpenFlight triangle-strip primitive: each triangle is joined to the
-// previous one by degenerate (zero-area) triangles, with its corners ordered so that the
-// strip's alternating winding keeps every real triangle's orientation. One primitive per
-// part lets OpenSceneGraph build one geometry instead of one per triangle.
+// Triangles as one OpenFlight triangle-strip primitive. Strips are grown greedily across
+// shared edges (each new vertex adds a triangle of the right winding); separate strips
+// are joined by degenerate (zero-area) triangles, padded so that every strip starts at
+// an even position and keeps its orientation. One primitive per part lets
+// OpenSceneGraph build one geometry instead of one per triangle.
 #pragma once
 
 #include "lod_model.h"
