@@ -1,0 +1,207 @@
+// Side-by-side simplification benchmark on CAD-like tessellations (tests/simplify/
+// cad_meshes.h): cadlod's CAD Quadric Edge Collapse, vcglib's stock quadric collapse set up
+// as MeshLab's filter sets it up, meshoptimizer and CGAL Garland–Heckbert. Each run is a
+// forked process (peak memory per run); prints one Markdown table.
+//   simplify_bench [--sizes 24000,250000,1000000] [--reductions 50,90]
+//                  [--tools cadlod,vcglib,meshopt,cgal] [--assembly-segments 1024]
+#include "cad_meshes.h"
+#include "mesh_checks.h"
+#include "peer_cgal.h"
+#include "peer_meshopt.h"
+#include "stock_quadric.h"
+#include "test_mesh.h"
+
+#include "core/compactness.h"
+#include "core/hausdorff.h"
+#include "core/simplify.h"
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using cadlod::test::TestMesh;
+
+namespace {
+
+struct MeshSpec {
+    std::string name;
+    std::function<void(TestMesh&)> build;
+};
+
+struct Row {
+    int in = 0, out = 0;
+    double seconds = 0;
+    long peakKb = 0;
+    double cMean = 0, cP5 = 0, cBelow01 = 0;
+    double hMax = 0, hMean = 0;
+    int folded = 0, nonManifold = 0;
+    bool ok = false;
+};
+
+// A stepped shaft (centre-drilled ends) tessellated like a CAD exporter with about
+// `triangles` triangles: more segments and more rings along the cylinders as it grows.
+MeshSpec shaft(int triangles)
+{
+    const int rings = std::max(1, int(std::lround(std::sqrt(triangles / 24000.0))));
+    const int segments = triangles / (14 + 6 * rings);
+    return {"shaft " + std::to_string(cadlod::test::shaftTriangles(segments, rings, false)), [=](TestMesh& m) {
+                cadlod::test::CadBuilder b;
+                cadlod::test::revolve(b, cadlod::test::shaftProfile(2.0), cadlod::test::shaftSpec(segments, rings));
+                b.build(m);
+            }};
+}
+
+MeshSpec assembly(int segments)
+{
+    TestMesh probe;
+    cadlod::test::CadBuilder b;
+    cadlod::test::assembly(b, segments);
+    return {"assembly " + std::to_string(b.triangles.size()), [=](TestMesh& m) {
+                cadlod::test::CadBuilder a;
+                cadlod::test::assembly(a, segments);
+                a.build(m, true);
+            }};
+}
+
+double secondsSince(std::chrono::steady_clock::time_point t)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+void simplifyWith(const std::string& tool, TestMesh& m, int target, double& seconds)
+{
+    if (tool == "cgal") {
+        cadlod::bench::CgalMesh sm = cadlod::bench::toCgal(m);
+        const auto t = std::chrono::steady_clock::now();
+        cadlod::bench::cgalSimplify(sm, target);
+        seconds = secondsSince(t);
+        cadlod::bench::fromCgal(sm, m);
+        return;
+    }
+    const auto t = std::chrono::steady_clock::now();
+    if (tool == "cadlod") {
+        cadlod::SimplifyParams p;
+        p.targetFaces = target;
+        cadlod::simplify(m, p);
+    } else if (tool == "vcglib") {
+        cadlod::test::stockSimplify(m, target, cadlod::test::stockDefaults<TestMesh>());
+    } else if (tool == "meshopt") {
+        cadlod::bench::meshoptSimplify(m, target);
+    }
+    seconds = secondsSince(t);
+}
+
+Row runOne(const MeshSpec& spec, const std::string& tool, int reduction)
+{
+    Row r;
+    TestMesh m;
+    spec.build(m);
+    r.in = m.fn;
+    const int target = int(std::lround(m.fn * (1.0 - reduction / 100.0)));
+    simplifyWith(tool, m, target, r.seconds);
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    r.peakKb = usage.ru_maxrss;
+    r.out = m.fn;
+
+    TestMesh original;
+    spec.build(original);
+    const cadlod::CompactnessStats c = cadlod::meshCompactness(m);
+    r.cMean = c.mean;
+    r.cP5 = c.p5;
+    r.cBelow01 = c.shareBelow01;
+    const std::size_t samples = std::min<std::size_t>(original.fn, 1000000);
+    const cadlod::SymmetricHausdorff h = cadlod::symmetricHausdorff(original, m, samples);
+    r.hMax = h.maxFraction();
+    r.hMean = h.meanFraction();
+    r.folded = cadlod::test::foldedFaces(m, original, 90.0);
+    r.nonManifold = cadlod::test::nonManifoldEdges(m);
+    r.ok = true;
+    return r;
+}
+
+// In a child process, so that peak memory belongs to this run alone.
+Row runForked(const MeshSpec& spec, const std::string& tool, int reduction)
+{
+    int fds[2];
+    if (pipe(fds) != 0)
+        return {};
+    const pid_t pid = fork();
+    if (pid == 0) {
+        close(fds[0]);
+        const Row r = runOne(spec, tool, reduction);
+        const ssize_t written = write(fds[1], &r, sizeof r);
+        _exit(written == ssize_t(sizeof r) ? 0 : 1);
+    }
+    close(fds[1]);
+    Row r;
+    const ssize_t got = read(fds[0], &r, sizeof r);
+    close(fds[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (got != ssize_t(sizeof r))
+        r.ok = false;
+    return r;
+}
+
+std::vector<std::string> split(const std::string& s)
+{
+    std::vector<std::string> out;
+    std::stringstream in(s);
+    for (std::string item; std::getline(in, item, ',');)
+        if (!item.empty())
+            out.push_back(item);
+    return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    std::string sizes = "24000,250000,1000000", reductions = "50,90", tools = "cadlod,vcglib,meshopt,cgal";
+    int assemblySegments = 1024;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string key = argv[i], value = argv[i + 1];
+        if (key == "--sizes") sizes = value;
+        else if (key == "--reductions") reductions = value;
+        else if (key == "--tools") tools = value;
+        else if (key == "--assembly-segments") assemblySegments = std::stoi(value);
+        else {
+            std::fprintf(stderr, "unknown option %s\n", key.c_str());
+            return 2;
+        }
+    }
+    std::vector<MeshSpec> meshes;
+    for (const std::string& s : split(sizes))
+        meshes.push_back(shaft(std::stoi(s)));
+    if (assemblySegments > 0)
+        meshes.push_back(assembly(assemblySegments));
+
+    std::printf("| mesh | red. | tool | tris in | tris out | s | tris/s | peak MB | c mean | c p5 | c<0.1 | "
+                "H max %%diag | H mean %%diag | flipped | non-manif. |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (const MeshSpec& spec : meshes)
+        for (const std::string& red : split(reductions))
+            for (const std::string& tool : split(tools)) {
+                const Row r = runForked(spec, tool, std::stoi(red));
+                if (!r.ok) {
+                    std::printf("| %s | %s%% | %s | failed |\n", spec.name.c_str(), red.c_str(), tool.c_str());
+                    continue;
+                }
+                std::printf("| %s | %s%% | %s | %d | %d | %.3f | %.0f | %.0f | %.3f | %.3f | %.1f%% | %.4f | %.5f | %d | %d |\n",
+                            spec.name.c_str(), red.c_str(), tool.c_str(), r.in, r.out, r.seconds,
+                            r.seconds > 0 ? r.in / r.seconds : 0.0, r.peakKb / 1024.0, r.cMean, r.cP5,
+                            100 * r.cBelow01, 100 * r.hMax, 100 * r.hMean, r.folded, r.nonManifold);
+                std::fflush(stdout);
+            }
+    return 0;
+}
