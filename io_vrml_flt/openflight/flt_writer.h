@@ -15,7 +15,7 @@
 namespace cadlod::flt {
 
 enum class GeometryRecords {
-    Meshes,  // Mesh + Local Vertex Pool + one stitched triangle-strip primitive per part
+    Meshes,  // Mesh + Local Vertex Pool + one triangle-strip primitive per part (triangle_strip.h)
     Faces,   // shared Vertex Palette + one Face record (with Vertex List) per triangle
 };
 enum class ObjectGrouping { PerPart, PerLevel };
