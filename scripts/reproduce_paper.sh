@@ -403,7 +403,7 @@ set: $SET_ROUTE.
 Load time: OpenSceneGraph \`readNodeFile\` wall clock (plugin preloaded), median of 5 fresh
 processes. Frame rate: \`osg_render\`, ${FRAMES} frames in a 640×480 window along one orbit whose
 distance grows geometrically from $(printf %.0f "$PATH_NEAR") to $(printf %.0f "$PATH_FAR") model units (the whole
-set's LOD ranges switch along it), the same path for every file, median of $RUNS runs;
+set's levels seen along it are listed below), the same path for every file, median of $RUNS runs;
 "fps by CPU time" divides the frames by the CPU time of the rendering process (Mesa draws in
 its threads), which a busy machine disturbs less than the wall clock. Triangles are the faces
 of each level's mesh; the whole set's are those of all its levels.
