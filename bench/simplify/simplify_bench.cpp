@@ -4,6 +4,7 @@
 // forked process (peak memory per run); prints one Markdown table.
 //   simplify_bench [--sizes 24000,250000,1000000] [--reductions 50,90]
 //                  [--tools cadlod,vcglib,meshopt,cgal] [--assembly-segments 1024]
+//                  [--dump-ply DIR]   (also write each input mesh, for meshlab_stock.sh)
 #include "cad_meshes.h"
 #include "mesh_checks.h"
 #include "peer_cgal.h"
@@ -19,6 +20,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -48,11 +50,13 @@ struct Row {
 };
 
 // A stepped shaft (centre-drilled ends) tessellated like a CAD exporter with about
-// `triangles` triangles: more segments and more rings along the cylinders as it grows.
+// `triangles` triangles: a finer chord tolerance (segments ~ sqrt(size)) and more rings
+// along the cylinders (a maximum edge length) as it grows.
 MeshSpec shaft(int triangles)
 {
-    const int rings = std::max(1, int(std::lround(std::sqrt(triangles / 24000.0))));
-    const int segments = triangles / (14 + 6 * rings);
+    const double scale = std::sqrt(triangles / 24000.0);
+    const int segments = int(std::lround(1200 * scale));
+    const int rings = std::max(1, int(std::lround((double(triangles) / segments - 14) / 6)));
     return {"shaft " + std::to_string(cadlod::test::shaftTriangles(segments, rings, false)), [=](TestMesh& m) {
                 cadlod::test::CadBuilder b;
                 cadlod::test::revolve(b, cadlod::test::shaftProfile(2.0), cadlod::test::shaftSpec(segments, rings));
@@ -169,12 +173,14 @@ int main(int argc, char** argv)
 {
     std::string sizes = "24000,250000,1000000", reductions = "50,90", tools = "cadlod,vcglib,meshopt,cgal";
     int assemblySegments = 1024;
+    std::string dumpDir;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string key = argv[i], value = argv[i + 1];
         if (key == "--sizes") sizes = value;
         else if (key == "--reductions") reductions = value;
         else if (key == "--tools") tools = value;
         else if (key == "--assembly-segments") assemblySegments = std::stoi(value);
+        else if (key == "--dump-ply") dumpDir = value;
         else {
             std::fprintf(stderr, "unknown option %s\n", key.c_str());
             return 2;
@@ -186,6 +192,14 @@ int main(int argc, char** argv)
     if (assemblySegments > 0)
         meshes.push_back(assembly(assemblySegments));
 
+    for (const MeshSpec& spec : meshes)
+        if (!dumpDir.empty()) {
+            TestMesh m;
+            spec.build(m);
+            std::string file = spec.name;
+            std::replace(file.begin(), file.end(), ' ', '_');
+            cadlod::test::savePly(dumpDir + "/" + file + ".ply", m);
+        }
     std::printf("| mesh | red. | tool | tris in | tris out | s | tris/s | peak MB | c mean | c p5 | c<0.1 | "
                 "H max %%diag | H mean %%diag | flipped | non-manif. |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
