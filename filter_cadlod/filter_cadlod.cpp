@@ -2,13 +2,14 @@
 
 #include "core/compactness.h"
 #include "lod_set_filter.h"
+#include "report_filter.h"
 #include "simplify_filter.h"
 
 #include <vcg/complex/algorithms/stat.h>
 
 FilterCadLodPlugin::FilterCadLodPlugin()
 {
-    typeList << FP_COMPACTNESS << FP_CAD_SIMPLIFY << FP_LOD_SET;
+    typeList << FP_COMPACTNESS << FP_CAD_SIMPLIFY << FP_LOD_SET << FP_REPORT;
     for (FilterIDType t : types())
         actionList << new QAction(filterName(t), this);
 }
@@ -21,6 +22,7 @@ QString FilterCadLodPlugin::filterName(FilterIDType filter) const
     case FP_COMPACTNESS: return "Compute Triangle Compactness";
     case FP_LOD_SET: return "Generate CAD LOD Set";
     case FP_CAD_SIMPLIFY: return "Simplification: CAD Quadric Edge Collapse (compactness)";
+    case FP_REPORT: return "Simplification Report";
     }
     return {};
 }
@@ -42,6 +44,14 @@ QString FilterCadLodPlugin::filterInfo(FilterIDType filter) const
                "fold, and a minimum compactness is enforced. Stops at a face count, a reduction "
                "percentage or a maximum error (fraction of the bbox diagonal), whichever comes first. "
                "The log reports faces, time, compactness before/after and the largest collapse error.";
+    case FP_REPORT:
+        return "Compares the current layer with the one it was simplified from: face and vertex "
+               "counts, the symmetric Hausdorff distance (max, mean, RMS; absolute and in % of the "
+               "bounding-box diagonal; vertices plus area-uniform samples, as MeshLab's Hausdorff "
+               "Distance filter samples) and triangle compactness before and after, with a "
+               "histogram. It can store each vertex's distance as vertex quality and each "
+               "triangle's compactness as face quality, so the quality color mapper shows where "
+               "the error and the slivers are.";
     case FP_LOD_SET:
         return "Builds levels of detail of the current layer with the CAD Quadric Edge Collapse: "
                "one new layer per level (by default 50, 60, 70, 80 and 90 % fewer faces, as Tang "
@@ -59,14 +69,15 @@ MeshFilterInterface::FilterClass FilterCadLodPlugin::getClass(QAction* action)
     switch (ID(action)) {
     case FP_COMPACTNESS: return FilterClass(Quality | Measure);
     case FP_LOD_SET: return Remeshing;
+    case FP_REPORT: return FilterClass(Quality | Measure);
     case FP_CAD_SIMPLIFY: return Remeshing;
     }
     return Measure;
 }
 
-MeshFilterInterface::FILTER_ARITY FilterCadLodPlugin::filterArity(QAction*) const
+MeshFilterInterface::FILTER_ARITY FilterCadLodPlugin::filterArity(QAction* action) const
 {
-    return SINGLE_MESH;
+    return ID(action) == FP_REPORT ? FIXED : SINGLE_MESH;
 }
 
 int FilterCadLodPlugin::getRequirements(QAction* action)
@@ -84,6 +95,7 @@ int FilterCadLodPlugin::getPreConditions(QAction* action) const
     switch (ID(action)) {
     case FP_COMPACTNESS: return MeshModel::MM_FACENUMBER;
     case FP_LOD_SET: return MeshModel::MM_FACENUMBER;
+    case FP_REPORT: return MeshModel::MM_FACENUMBER;
     case FP_CAD_SIMPLIFY: return MeshModel::MM_FACENUMBER;
     }
     return MeshModel::MM_NONE;
@@ -94,6 +106,7 @@ int FilterCadLodPlugin::postCondition(QAction* action) const
     switch (ID(action)) {
     case FP_COMPACTNESS: return MeshModel::MM_FACEQUALITY;
     case FP_LOD_SET: return MeshModel::MM_NONE;  // the original is not changed; levels are new layers
+    case FP_REPORT: return MeshModel::MM_VERTQUALITY | MeshModel::MM_FACEQUALITY;
     case FP_CAD_SIMPLIFY: return MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE;
     }
     return MeshModel::MM_ALL;
@@ -107,13 +120,35 @@ void FilterCadLodPlugin::initParameterSet(QAction* action, MeshModel& m, RichPar
     }
 }
 
+void FilterCadLodPlugin::initParameterSet(QAction* action, MeshDocument& md, RichParameterList& parlst)
+{
+    if (ID(action) == FP_REPORT)
+        cadlod::reportParameters(md, parlst);
+    else if (md.mm())
+        initParameterSet(action, *md.mm(), parlst);
+}
+
+// meshlabserver prints only "Problem with filter" when a filter fails: the reason goes to
+// the log as well, so headless users see it.
 bool FilterCadLodPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& par,
                                      vcg::CallBackPos* cb)
 {
-    switch (ID(action)) {
+    errorMessage.clear();
+    const bool ok = apply(ID(action), md, par, cb);
+    if (!ok)
+        Log(GLLogStream::WARNING, "%s failed: %s", qUtf8Printable(filterName(ID(action))),
+            qUtf8Printable(errorMessage));
+    return ok;
+}
+
+bool FilterCadLodPlugin::apply(FilterIDType filter, MeshDocument& md, const RichParameterList& par,
+                               vcg::CallBackPos* cb)
+{
+    switch (filter) {
     case FP_COMPACTNESS: return computeCompactness(*md.mm(), cb);
     case FP_LOD_SET: return cadlod::generateLodSet(*this, md, par, cb, errorMessage);
     case FP_CAD_SIMPLIFY: return cadlod::cadSimplify(*this, *md.mm(), par, cb, errorMessage);
+    case FP_REPORT: return cadlod::simplificationReport(*this, md, par, errorMessage);
     }
     errorMessage = "Unknown filter";
     return false;

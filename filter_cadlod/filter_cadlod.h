@@ -12,7 +12,7 @@ class FilterCadLodPlugin : public QObject, public MeshFilterInterface
     Q_INTERFACES(MeshFilterInterface)
 
 public:
-    enum { FP_COMPACTNESS, FP_LOD_SET, FP_CAD_SIMPLIFY };
+    enum { FP_COMPACTNESS, FP_LOD_SET, FP_CAD_SIMPLIFY, FP_REPORT };
 
     FilterCadLodPlugin();
 
@@ -25,9 +25,11 @@ public:
     int getPreConditions(QAction* action) const override;
     int postCondition(QAction* action) const override;
     void initParameterSet(QAction* action, MeshModel& m, RichParameterList& parlst) override;
+    void initParameterSet(QAction* action, MeshDocument& md, RichParameterList& parlst) override;
     bool applyFilter(QAction* action, MeshDocument& md, const RichParameterList& par,
                      vcg::CallBackPos* cb) override;
 
 private:
+    bool apply(FilterIDType filter, MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb);
     bool computeCompactness(MeshModel& m, vcg::CallBackPos* cb);
 };

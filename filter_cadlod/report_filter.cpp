@@ -1,0 +1,98 @@
+#include "report_filter.h"
+
+#include "core/layer_metadata.h"
+#include "core/simplification_report.h"
+
+namespace cadlod {
+namespace {
+
+// The original of a LOD level is level 0 of its set; otherwise the first other layer.
+MeshModel* defaultOriginal(MeshDocument& md)
+{
+    MeshModel* current = md.mm();
+    if (current && hasLodLevel(current->cm)) {
+        const int set = lodLevelHandle(current->cm)().setId;
+        for (MeshModel* m : md.meshList)
+            if (m != current && hasLodLevel(m->cm) && lodLevelHandle(m->cm)().setId == set &&
+                lodLevelHandle(m->cm)().level == 0)
+                return m;
+    }
+    for (MeshModel* m : md.meshList)
+        if (m != current)
+            return m;
+    return current;
+}
+
+double percentOf(double value, double diagonal) { return diagonal > 0 ? 100.0 * value / diagonal : 0.0; }
+
+void logReport(MeshFilterInterface& plugin, const MeshModel& current, const MeshModel& original,
+               const SimplificationReport& r)
+{
+    const SymmetricHausdorff& d = r.distance;
+    plugin.Log("Simplification report: %s against %s", qUtf8Printable(current.label()),
+               qUtf8Printable(original.label()));
+    plugin.Log("  faces %d -> %d (%+.1f%%), vertices %d -> %d", r.facesBefore, r.facesAfter,
+               r.facesBefore ? 100.0 * (r.facesAfter - r.facesBefore) / r.facesBefore : 0.0, r.verticesBefore,
+               r.verticesAfter);
+    plugin.Log("  Hausdorff (symmetric, %zu samples): max %.6g (%.4f%% of diagonal), mean %.6g (%.4f%%), "
+               "RMS %.6g (%.4f%%); original->current max %.6g, current->original max %.6g",
+               d.forward.samples + d.backward.samples, d.max(), percentOf(d.max(), d.diagonal), d.mean(),
+               percentOf(d.mean(), d.diagonal), d.rms(), percentOf(d.rms(), d.diagonal), d.forward.max,
+               d.backward.max);
+    for (const auto& [name, s] : {std::pair{"before", r.before}, std::pair{"after", r.after}})
+        plugin.Log("  compactness %s: mean %.4f, min %.4f, p5 %.4f, below 0.1: %.2f%%, below 0.3: %.2f%%", name,
+                   s.mean, s.min, s.p5, 100.0 * s.shareBelow01, 100.0 * s.shareBelow03);
+    for (const std::string& line : histogramLines(r))
+        plugin.Log("  %s", line.c_str());
+}
+
+}  // namespace
+
+void reportParameters(MeshDocument& md, RichParameterList& par)
+{
+    par.addParam(RichMesh("original", defaultOriginal(md), &md, "Original",
+                          "The layer the current one was simplified from (level 0 of its LOD set "
+                          "by default)."));
+    par.addParam(RichInt("samples", 0, "Samples per direction",
+                         "Surface samples for the Hausdorff distance in each direction, besides "
+                         "the vertices; 0 = as many as the larger face count."));
+    par.addParam(RichBool("storeDistance", true, "Distance as vertex quality",
+                          "Store each vertex's distance to the original as vertex quality, for "
+                          "the quality color mapper."));
+    par.addParam(RichBool("storeCompactness", true, "Compactness as face quality",
+                          "Store each triangle's compactness as face quality."));
+}
+
+bool simplificationReport(MeshFilterInterface& plugin, MeshDocument& md, const RichParameterList& par,
+                          QString& error)
+{
+    MeshModel* current = md.mm();
+    MeshModel* original = par.getMesh("original");
+    if (!current || !original || current == original) {
+        error = "choose as Original a layer other than the current one";
+        return false;
+    }
+    if (current->cm.fn == 0 || original->cm.fn == 0) {
+        error = "both layers need faces";
+        return false;
+    }
+    std::vector<double> distance;
+    const SimplificationReport r = compareWithOriginal(original->cm, current->cm,
+                                                       std::size_t(std::max(0, par.getInt("samples"))),
+                                                       &distance);
+    if (par.getBool("storeDistance")) {
+        current->updateDataMask(MeshModel::MM_VERTQUALITY);
+        for (std::size_t i = 0; i < current->cm.vert.size(); ++i)
+            current->cm.vert[i].Q() = CVertexO::QualityType(distance[i]);
+    }
+    if (par.getBool("storeCompactness")) {
+        current->updateDataMask(MeshModel::MM_FACEQUALITY);
+        for (CFaceO& f : current->cm.face)
+            if (!f.IsD())
+                f.Q() = CFaceO::QualityType(compactness(f.cP(0), f.cP(1), f.cP(2)));
+    }
+    logReport(plugin, *current, *original, r);
+    return true;
+}
+
+}  // namespace cadlod
