@@ -28,7 +28,7 @@ row() {  # name write_s bytes tris file
 }
 header() {
   echo
-  echo "$1"
+  echo "$1"; echo
   echo "| writer                             | write s  | bytes      | B/tri  | OSG load s | OSG MB | LODs | OSG tris  |"
   echo "|------------------------------------|----------|------------|--------|----------|---------|------|-----------|"
 }
