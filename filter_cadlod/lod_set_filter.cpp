@@ -1,6 +1,7 @@
 #include "lod_set_filter.h"
 
 #include "core/lod_builder.h"
+#include "simplify_parameters.h"
 
 #include <QElapsedTimer>
 
@@ -26,10 +27,7 @@ LodSetOptions readOptions(const RichParameterList& par)
     o.view.viewportHeightPx = par.getInt("viewportHeight");
     o.view.pixelThreshold = par.getFloat("pixelError");
     o.hausdorffSamples = std::size_t(std::max(0, par.getInt("samples")));
-    o.simplify.featureAngle = par.getFloat("featureAngle");
-    o.simplify.preserveBoundary = par.getBool("preserveBoundary");
-    o.simplify.preserveTopology = par.getBool("preserveTopology");
-    o.simplify.tieTolerance = par.getFloat("tieTolerance");
+    readPlacementParameters(par, o.simplify);
     return o;
 }
 
@@ -81,14 +79,7 @@ void lodSetParameters(MeshModel&, RichParameterList& par)
     par.addParam(RichInt("samples", 0, "Hausdorff samples",
                          "Surface samples per side for the error of each level; 0 = as many "
                          "as the original has faces."));
-    par.addParam(RichFloat("featureAngle", 30.0f, "Feature angle (deg)",
-                           "Edges whose dihedral angle exceeds this stay sharp."));
-    par.addParam(RichBool("preserveBoundary", true, "Preserve boundary", "Keep open borders in place."));
-    par.addParam(RichBool("preserveTopology", true, "Preserve topology",
-                          "Refuse collapses that change the genus or make non-manifold edges."));
-    par.addParam(RichFloat("tieTolerance", 0.1f, "Tie tolerance",
-                           "Candidate positions whose quadric cost is within this fraction of "
-                           "the cheapest are tied; the most compact one wins."));
+    addPlacementParameters(par);
 }
 
 bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichParameterList& par,

@@ -1,0 +1,59 @@
+#include "simplify_parameters.h"
+
+namespace cadlod {
+
+void addPlacementParameters(RichParameterList& par)
+{
+    const SimplifyParams d;
+    par.addParam(RichFloat("tieTolerance", d.tieTolerance, "Tie tolerance (relative)",
+                           "Placements whose quadric cost is within this fraction of the cheapest are tied; the "
+                           "tied placement with the most compact triangles wins."));
+    par.addParam(RichFloat("flatTolerance", d.flatTolerance, "Flat tolerance (fraction of diagonal)",
+                           "Absolute tie floor for flat regions, as an RMS distance relative to the diagonal."));
+    par.addParam(RichInt("candidatesPerEdge", d.candidatesPerEdge, "Candidates per edge",
+                         "Evenly spaced points tried along each edge, besides its ends and the quadric optimum."));
+    par.addParam(RichBool("optimalPlacement", d.optimalPlacement, "Optimal placement",
+                          "Also try the quadric optimum (when well conditioned and near the edge)."));
+    par.addParam(RichFloat("featureAngle", d.featureAngle, "Feature angle (degrees)",
+                           "Edges whose faces meet at a sharper angle are creases: they keep their vertices."));
+    par.addParam(RichBool("preserveBoundary", d.preserveBoundary, "Preserve boundary",
+                          "Boundary edges are features: boundary vertices stay on the boundary polyline."));
+    par.addParam(RichFloat("boundaryWeight", d.boundaryWeight, "Boundary/crease weight",
+                           "Weight of the constraint quadrics of boundary edges, creases and part borders."));
+    par.addParam(RichBool("preserveTopology", d.preserveTopology, "Preserve topology",
+                          "Refuse collapses that would change the genus or make the mesh non-manifold."));
+    par.addParam(RichBool("normalCheck", d.normalCheck, "Normal check",
+                          "Refuse collapses that turn a face by more than the normal threshold or against its "
+                          "input orientation."));
+    par.addParam(RichFloat("normalThreshold", d.normalThreshold, "Normal threshold (degrees)",
+                           "Largest rotation of a face normal in one collapse."));
+    par.addParam(RichFloat("minCompactness", d.minCompactness, "Minimum compactness",
+                           "Never create a triangle less compact than this, unless the neighbourhood was already "
+                           "worse."));
+    par.addParam(RichFloat("qualityThreshold", d.qualityThreshold, "Quality threshold",
+                           "Collapses whose new triangles have a mean compactness below this wait longer."));
+    par.addParam(RichBool("planarQuadric", d.planarQuadric, "Planar quadrics",
+                          "Tiny extra quadrics on every edge: steadier flat regions."));
+    par.addParam(RichBool("keepPartBorders", d.keepPartBorders, "Keep part borders",
+                          "Edges between faces of different CAD parts (cadlod_part attribute) are features."));
+}
+
+void readPlacementParameters(const RichParameterList& par, SimplifyParams& p)
+{
+    p.tieTolerance = par.getFloat("tieTolerance");
+    p.flatTolerance = par.getFloat("flatTolerance");
+    p.candidatesPerEdge = par.getInt("candidatesPerEdge");
+    p.optimalPlacement = par.getBool("optimalPlacement");
+    p.featureAngle = par.getFloat("featureAngle");
+    p.preserveBoundary = par.getBool("preserveBoundary");
+    p.boundaryWeight = par.getFloat("boundaryWeight");
+    p.preserveTopology = par.getBool("preserveTopology");
+    p.normalCheck = par.getBool("normalCheck");
+    p.normalThreshold = par.getFloat("normalThreshold");
+    p.minCompactness = par.getFloat("minCompactness");
+    p.qualityThreshold = par.getFloat("qualityThreshold");
+    p.planarQuadric = par.getBool("planarQuadric");
+    p.keepPartBorders = par.getBool("keepPartBorders");
+}
+
+}  // namespace cadlod
