@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cadlod::vrml {
 namespace {
@@ -99,6 +100,7 @@ public:
     size_t run()
     {
         if (!in_.coords || !in_.coordIndex) return 0;
+        markPlaceablePoints();
         collectFaces();
         if (faces_.empty()) return 0;
         computeCornerNormals();
@@ -130,6 +132,19 @@ private:
         diag_.warn(kind, in_.where, "face " + std::to_string(f.number) + " skipped: " + why);
     }
 
+    // A point that is NaN or infinite in the file, or beyond float range once transformed,
+    // cannot be placed: faces using it are skipped like faces with a bad index.
+    void markPlaceablePoints()
+    {
+        const size_t coordCount = in_.coords->size() / 3;
+        placeable_.assign(coordCount, 1);
+        const double limit = double(std::numeric_limits<float>::max());
+        for (size_t i = 0; i < coordCount; ++i) {
+            const Vec3 p = world_.transformPoint(coordAt(*in_.coords, int32_t(i)));
+            placeable_[i] = std::fabs(p.x) <= limit && std::fabs(p.y) <= limit && std::fabs(p.z) <= limit;
+        }
+    }
+
     void collectFaces()
     {
         const std::vector<int32_t>& idx = *in_.coordIndex;
@@ -149,6 +164,13 @@ private:
                     if (!bad)
                         skipFace(f, "bad index",
                                  "coordIndex[" + std::to_string(k) + "] = " + std::to_string(c.coord) + " out of range");
+                    bad = true;
+                    continue;
+                }
+                if (!placeable_[size_t(c.coord)]) {
+                    if (!bad)
+                        skipFace(f, "bad coordinate",
+                                 "point " + std::to_string(c.coord) + " is NaN, infinite or beyond float range");
                     bad = true;
                     continue;
                 }
@@ -357,6 +379,7 @@ private:
     SceneStats& stats_;
 
     bool badAttributeWarned_ = false;
+    std::vector<char> placeable_;  // per point of in_.coords
     std::vector<Corner> corners_;
     std::vector<Face> faces_;
     std::vector<Vec3f> cornerNormals_;

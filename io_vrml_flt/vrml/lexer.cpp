@@ -1,6 +1,9 @@
 #include "vrml/lexer.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <limits>
 
 namespace cadlod::vrml {
 namespace {
@@ -190,6 +193,27 @@ Token Lexer::next()
     return lex();
 }
 
+// std::from_chars leaves the value untouched when it is out of range: parse through double
+// and round explicitly, so 1e-50 reads as 0 and 1e39 as infinity (a point the face emitter
+// then refuses) instead of silently repeating the previous number.
+static bool parseFloatBeyondRange(const char* p, const char* end, float& value)
+{
+    double d = 0;
+    const auto r = std::from_chars(p, end, d);
+    if (r.ec == std::errc::result_out_of_range) {
+        const bool negative = p < end && *p == '-';
+        const char* e = std::find_if(p, r.ptr, [](char c) { return c == 'e' || c == 'E'; });
+        const bool tiny = e + 1 < r.ptr && e[1] == '-';
+        d = tiny ? 0.0 : std::numeric_limits<double>::infinity();
+        if (negative) d = -d;
+    } else if (r.ec != std::errc()) {
+        return false;
+    }
+    if (std::fabs(d) > double(std::numeric_limits<float>::max())) value = d < 0 ? -HUGE_VALF : HUGE_VALF;
+    else value = float(d);
+    return true;
+}
+
 bool Lexer::toFloat(std::string_view text, float& value)
 {
     const char* p = text.data();
@@ -203,8 +227,7 @@ bool Lexer::toFloat(std::string_view text, float& value)
         value = float(negative ? -v : v);
         return true;
     }
-    auto r = std::from_chars(p, end, value);
-    return r.ec == std::errc() || r.ec == std::errc::result_out_of_range;
+    return parseFloatBeyondRange(p, end, value);
 }
 
 bool Lexer::readFloat(float& value)

@@ -3,6 +3,10 @@
 #include "vrml/lexer.h"
 #include "vrml/proto.h"
 
+#include <cctype>
+#include <climits>
+#include <limits>
+#include <string>
 #include <unordered_map>
 
 namespace cadlod::vrml {
@@ -11,6 +15,21 @@ namespace {
 bool isIndexField(std::string_view name)
 {
     return name == "index" || (name.size() > 5 && name.substr(name.size() - 5) == "Index");
+}
+
+// Exporters print non-finite values as words (nan, -inf, Infinity); read inside a number
+// list they must keep their place, or every later value would shift silently.
+bool nonFiniteNumberWord(std::string_view w, float& value)
+{
+    std::string lower;
+    for (char c : w) lower.push_back(char(std::tolower(static_cast<unsigned char>(c))));
+    const bool negative = !lower.empty() && lower[0] == '-';
+    if (!lower.empty() && (lower[0] == '-' || lower[0] == '+')) lower.erase(0, 1);
+    if (lower == "nan") value = std::numeric_limits<float>::quiet_NaN();
+    else if (lower == "inf" || lower == "infinity") value = std::numeric_limits<float>::infinity();
+    else return false;
+    if (negative) value = -value;
+    return true;
 }
 
 bool isInterfaceKeyword(std::string_view w)
@@ -283,6 +302,25 @@ private:
         if (lex_.peek().kind == TokenKind::Number) fail(lex_.peek(), "bad number");
     }
 
+    bool readNonFiniteNumber(const std::string& name, const Token& w, FieldValue& v)
+    {
+        float value = 0;
+        if (!nonFiniteNumberWord(w.text, value)) return false;
+        diag_.warn("bad number", lex_.location(w),
+                   "'" + std::string(w.text) + "' in the value of " + name + " is not a finite number");
+        if (isIndexField(name)) {
+            if (!v.ints) v.ints = std::make_shared<std::vector<int32_t>>();
+            v.kind = FieldValue::Kind::Ints;
+            v.ints->push_back(INT32_MIN);  // an invalid index
+        } else {
+            if (!v.floats) v.floats = std::make_shared<std::vector<float>>();
+            v.kind = FieldValue::Kind::Floats;
+            v.floats->push_back(value);
+        }
+        readNumbers(name, v);
+        return true;
+    }
+
     void parseList(const std::string& name, FieldValue& v)
     {
         while (!failed()) {
@@ -300,6 +338,7 @@ private:
                 break;
             case TokenKind::Word: {
                 const Token w = lex_.next();
+                if (readNonFiniteNumber(name, w, v)) break;
                 if (w.text == "DEF" || w.text == "USE" || w.text == "NULL" || lex_.peek().kind == TokenKind::LBrace) {
                     v.kind = FieldValue::Kind::Nodes;
                     if (NodePtr n = parseNodeAfter(w)) v.nodes.push_back(std::move(n));
@@ -367,12 +406,20 @@ private:
         auto decl = std::make_shared<ProtoDecl>();
         decl->name = word("a PROTO name");
         parseProtoInterface(*decl);
+        const Token brace = lex_.peek();
         if (!expect(TokenKind::LBrace, "'{' opening the PROTO body")) return;
+        // PROTOs nest inside PROTO bodies: they count towards the nesting limit like nodes.
+        if (++depth_ > options_.maxDepth) {
+            fail(brace, "nesting deeper than " + std::to_string(options_.maxDepth) + " levels");
+            --depth_;
+            return;
+        }
         defScopes_.emplace_back();
         protoScopes_.emplace_back();
         parseStatements(decl->body, TokenKind::RBrace);
         defScopes_.pop_back();
         protoScopes_.pop_back();
+        --depth_;
         if (expect(TokenKind::RBrace, "'}' closing the PROTO body")) protoScopes_.back()[decl->name] = decl;
     }
 
