@@ -4,6 +4,7 @@
 #include "records.h"
 #include "triangle_strip.h"
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -403,7 +404,7 @@ private:
         std::vector<std::uint32_t> corners;
         for (std::uint32_t offset : f.faceOffsets) {
             const auto v = paletteVertices_.find(offset);
-            if (v == paletteVertices_.end())
+            if (v == paletteVertices_.end() || !isFinite(v->second.position))
                 continue;
             const auto [it, added] = index.emplace(offset, std::uint32_t(p.positions.size()));
             if (added)
@@ -417,6 +418,12 @@ private:
         setPartColorOnce(level, part, f.color);
         for (std::size_t i = 1; i + 1 < corners.size(); ++i)
             p.triangles.push_back({corners[0], corners[i], corners[i + 1]});
+    }
+
+    // NaN or infinite coordinates cannot be placed: their faces are skipped and counted.
+    static bool isFinite(const Vec3d& position)
+    {
+        return std::isfinite(position[0]) && std::isfinite(position[1]) && std::isfinite(position[2]);
     }
 
     void appendVertex(Part& p, const PoolVertex& v)
@@ -537,7 +544,7 @@ private:
             Triangle mapped;
             bool ok = true;
             for (int c = 0; c < 3 && ok; ++c) {
-                ok = t[c] < f.pool.size();
+                ok = t[c] < f.pool.size() && isFinite(f.pool[t[c]].position);
                 if (!ok)
                     break;
                 std::int64_t& target = f.poolToPart[t[c]];
