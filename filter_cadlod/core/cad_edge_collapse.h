@@ -35,11 +35,14 @@
 
 namespace cadlod {
 
-// A face around the collapsing edge that survives it: (new vertex, a, b).
+// A face around the collapsing edge that survives it: (new vertex, a, b). What does not
+// depend on the new vertex is computed once per edge, not once per candidate.
 struct RingFace {
     vcg::Point3d a, b;
-    vcg::Point3d normal;  // before the collapse, not normalised (zero for zero-area faces)
-    vcg::Point3f original;  // unit normal the face had in the input (zero if none)
+    vcg::Point3d normal;    // before the collapse, not normalised (zero for zero-area faces)
+    double normalLength;    // |normal|
+    vcg::Point3d original;  // unit normal the face had in the input (zero if none)
+    double abSquared;       // |b - a|²
 };
 
 struct PlacementScore {
@@ -64,6 +67,7 @@ struct CollapseContext : public vcg::BaseParameterClass {
     double cosNormalLimit = -1.0;
     double largestError = 0.0;    // over executed collapses
     std::vector<RingFace> ring;   // scratch of the edge being evaluated
+    std::vector<const typename MeshType::FaceType*> ringFaces;  // every face around the edge
     std::vector<vcg::Point3f> inputNormal;  // per face index: unit normal in the input
     const typename MeshType::FaceType* faceBase = nullptr;
 
@@ -255,17 +259,17 @@ private:
         this->_priority = std::numeric_limits<ScalarType>::max();
     }
 
-    // What the faces around the edge say: surviving faces into ctx.ring, whether the
-    // endpoints and the edge lie on features, and the worst compactness there now.
+    // What the faces around the edge say: surviving faces into ctx.ring, all faces into
+    // ctx.ringFaces, whether the endpoints and the edge lie on features.
     struct Neighbourhood {
         bool v0OnFeature = false, v1OnFeature = false, edgeIsFeature = false;
-        double worstCompactness = 1.0;
     };
 
     Neighbourhood gatherRing(Context& ctx, VertexType* v0, VertexType* v1)
     {
         Neighbourhood n;
         ctx.ring.clear();
+        ctx.ringFaces.clear();
         for (int side = 0; side < 2; ++side) {
             VertexType* v = side == 0 ? v0 : v1;
             VertexType* other = side == 0 ? v1 : v0;
@@ -286,38 +290,59 @@ private:
                     const vcg::Point3d pa = vcg::Point3d::Construct(a->cP());
                     const vcg::Point3d pb = vcg::Point3d::Construct(b->cP());
                     const vcg::Point3d pv = vcg::Point3d::Construct(v->cP());
-                    ctx.ring.push_back({pa, pb, (pa - pv) ^ (pb - pv), ctx.inputNormal[f - ctx.faceBase]});
+                    const vcg::Point3d normal = (pa - pv) ^ (pb - pv);
+                    ctx.ring.push_back({pa, pb, normal, normal.Norm(),
+                                        vcg::Point3d::Construct(ctx.inputNormal[f - ctx.faceBase]),
+                                        (pb - pa).SquaredNorm()});
                 }
-                n.worstCompactness = std::min(n.worstCompactness, compactness(f->cP(0), f->cP(1), f->cP(2)));
+                ctx.ringFaces.push_back(f);
             }
             (side == 0 ? n.v0OnFeature : n.v1OnFeature) = onFeature;
         }
         return n;
     }
 
-    PlacementScore score(const Context& ctx, const vcg::Point3d& p, double worstBefore) const
+    // Worst compactness around the edge now; only needed when a candidate would create a
+    // face below minCompactness, so computed on demand.
+    static double worstCompactnessNow(const Context& ctx)
     {
+        double worst = 1.0;
+        for (const FaceType* f : ctx.ringFaces)
+            worst = std::min(worst, compactness(f->cP(0), f->cP(1), f->cP(2)));
+        return worst;
+    }
+
+    PlacementScore score(const Context& ctx, const vcg::Point3d& p, double& worstBefore) const
+    {
+        constexpr double twoSqrt3 = 3.4641016151377544;
         PlacementScore s;
         double sum = 0.0, worst = 1.0;
         for (const RingFace& f : ctx.ring) {
+            const vcg::Point3d ua = f.a - p, ub = f.b - p;
+            const vcg::Point3d n = ua ^ ub;
+            const double doubleArea = n.Norm();
             if (ctx.params.normalCheck) {
-                const vcg::Point3d n = (f.a - p) ^ (f.b - p);
-                const double len = n.Norm() * f.normal.Norm();
-                if (f.normal.SquaredNorm() > 0 && !(len > 0 && (n * f.normal) >= ctx.cosNormalLimit * len)) {
+                const double len = doubleArea * f.normalLength;
+                if (f.normalLength > 0 && !(len > 0 && (n * f.normal) >= ctx.cosNormalLimit * len)) {
                     s.flipped = true;
                     return s;
                 }
+                if (n * f.original < 0) {
+                    s.flipped = true;  // turned away from the input surface
+                    return s;
+                }
             }
-            if (ctx.params.normalCheck && ((f.a - p) ^ (f.b - p)) * vcg::Point3d::Construct(f.original) < 0) {
-                s.flipped = true;  // turned away from the input surface
-                return s;
-            }
-            const double c = compactness(p, f.a, f.b);
+            const double edges = ua.SquaredNorm() + ub.SquaredNorm() + f.abSquared;
+            const double c = (edges > 0 && std::isfinite(edges) && std::isfinite(doubleArea))
+                                 ? std::min(1.0, twoSqrt3 * doubleArea / edges)
+                                 : 0.0;
             sum += c;
             worst = std::min(worst, c);
         }
         s.meanCompactness = sum / double(ctx.ring.size());
         s.minCompactness = worst;
+        if (worst < ctx.params.minCompactness && worstBefore < 0)
+            worstBefore = worstCompactnessNow(ctx);
         s.valid = !(worst < ctx.params.minCompactness && worst < worstBefore);
         return s;
     }
@@ -354,7 +379,7 @@ private:
         cand[count++] = {p1, 0.0, n.v0OnFeature && !n.v1OnFeature};
         for (int i = 1; i <= interior; ++i)
             cand[count++] = {p0 + (p1 - p0) * (double(i) / (interior + 1)), 0.0, anyFeature};
-        vcg::Point3d optimum;
+        vcg::Point3d optimum(0, 0, 0);
         if (ctx.params.optimalPlacement && quadricMinimum(q, optimum) &&
             vcg::Distance(optimum, (p0 + p1) * 0.5) <= vcg::Distance(p0, p1))
             cand[count++] = {optimum, 0.0, anyFeature};
@@ -373,11 +398,12 @@ private:
 
         int best = -1;
         PlacementScore bestScore;
+        double worstBefore = -1.0;  // not computed yet
         bool anyFlip = false;
         for (int i = 0; i < count; ++i) {
             if (cand[i].cost > tieLimit)
                 continue;
-            const PlacementScore s = score(ctx, cand[i].p, n.worstCompactness);
+            const PlacementScore s = score(ctx, cand[i].p, worstBefore);
             anyFlip |= s.flipped;
             if (s.valid && (best < 0 || s.meanCompactness > bestScore.minCompactness ||
                             (s.meanCompactness == bestScore.minCompactness && cand[i].cost < cand[best].cost))) {
@@ -389,7 +415,7 @@ private:
             for (int i = 0; i < count; ++i) {
                 if (cand[i].cost <= tieLimit || (best >= 0 && cand[i].cost >= cand[best].cost))
                     continue;
-                const PlacementScore s = score(ctx, cand[i].p, n.worstCompactness);
+                const PlacementScore s = score(ctx, cand[i].p, worstBefore);
                 anyFlip |= s.flipped;
                 if (s.valid) {
                     best = i;

@@ -153,8 +153,10 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
         session.template Init<Collapse>();
         if (stats.targetFaces > 0)
             session.SetTargetSimplices(stats.targetFaces);
-        session.SetTimeBudget(0.1f);  // return now and then to report progress
         const int toRemove = std::max(1, m.fn - stats.targetFaces);
+        // Return now and then to report progress: after a number of collapses, not a time
+        // budget (vcglib reads the process CPU clock, a system call, on every heap pop).
+        session.SetTargetOperations(std::max(1000, toRemove / 100));
         int collapsesSinceInit = 0;
         while (m.fn > stats.targetFaces) {
             const bool heapLeft = session.DoOptimization();

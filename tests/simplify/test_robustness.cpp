@@ -114,6 +114,7 @@ TEST(SimplifyRobustness, DuplicateVerticesZeroAreaFacesIsolatedAndNonFiniteVerti
     for (const auto& f : m.face)
         if (!f.IsD() && f.cV(0) != f.cV(1))
             for (int j = 0; j < 3; ++j)
-                if (f.cV(j) != &m.vert[0] && std::isfinite(f.cP(j)[0]))
+                if (f.cV(j) != &m.vert[0] && std::isfinite(f.cP(j)[0])) {
                     EXPECT_TRUE(std::isfinite(f.cP(j)[1]) && std::isfinite(f.cP(j)[2]));
+                }
 }

@@ -1,0 +1,139 @@
+// Bad OpenFlight input: corrupt record lengths, wrong header, garbage, unbalanced Push/Pop,
+// non-finite coordinates; each asserts the exact error naming the record offset. Every
+// truncation, random corruption, zero-length records and out-of-palette faces are already
+// covered by tests/openflight/test_reader.cpp (docs/reliability.md).
+#include "byte_access.h"
+#include "flt_reader.h"
+#include "flt_writer.h"
+#include "model_fixtures.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+using namespace cadlod;
+using namespace cadlod::flt;
+using cadlod::test::Bytes;
+
+namespace {
+
+Bytes written(GeometryRecords geometry = GeometryRecords::Faces)
+{
+    WriteOptions options;
+    options.geometry = geometry;
+    Bytes bytes;
+    std::string error;
+    EXPECT_TRUE(writeOpenFlight(test::singleLevelModel(1), options, bytes, error)) << error;
+    return bytes;
+}
+
+std::string readError(const Bytes& b)
+{
+    LodModel model;
+    std::string error;
+    EXPECT_FALSE(readOpenFlight(b.data(), b.size(), model, error)) << "read as a valid file";
+    return error;
+}
+
+const test::RecordSpan& firstRecord(const std::vector<test::RecordSpan>& spans, std::uint16_t opcode)
+{
+    for (const auto& s : spans)
+        if (s.opcode == opcode) return s;
+    throw std::runtime_error("no record with opcode " + std::to_string(opcode));
+}
+
+void setLength(Bytes& b, std::size_t recordOffset, std::uint16_t length)
+{
+    b[recordOffset + 2] = std::uint8_t(length >> 8);
+    b[recordOffset + 3] = std::uint8_t(length & 0xff);
+}
+
+constexpr std::uint16_t kVertexPalette = 67, kPop = 11, kVertexWithNormal = 69;
+
+}  // namespace
+
+TEST(BadFlt, RecordLengthZeroOrTwoIsShorterThanTheHeader)
+{
+    for (std::uint16_t length : {0, 2}) {
+        Bytes b = written();
+        const std::size_t at = firstRecord(test::recordSpans(b), kVertexPalette).offset;
+        setLength(b, at, length);
+        EXPECT_EQ(readError(b), "corrupt record at offset " + std::to_string(at) + " (opcode 67): length " +
+                                    std::to_string(length) + " is shorter than the 4-byte record header");
+    }
+}
+
+TEST(BadFlt, RecordLengthPastTheEndOfFile)
+{
+    Bytes b = written();
+    const std::size_t at = firstRecord(test::recordSpans(b), kVertexPalette).offset;
+    setLength(b, at, 0xfff0);
+    EXPECT_EQ(readError(b), "truncated record at offset " + std::to_string(at) + " (opcode 67): 65520 bytes announced, " +
+                                std::to_string(b.size() - at) + " left in the file");
+}
+
+TEST(BadFlt, FileCutInsideARecordNamesIt)
+{
+    Bytes b = written();
+    const test::RecordSpan pop = test::recordSpans(b).back();
+    ASSERT_EQ(pop.opcode, kPop);
+    b.resize(b.size() - 2);
+    EXPECT_EQ(readError(b), "truncated file: 2 byte(s) left at offset " + std::to_string(pop.offset) +
+                                ", a record header needs 4");
+}
+
+TEST(BadFlt, WrongHeaderOpcode)
+{
+    Bytes b = written();
+    b[1] = 2;  // a Group record first
+    EXPECT_EQ(readError(b), "not an OpenFlight file: the first record (offset 0) has opcode 2, expected a Header (1)");
+}
+
+TEST(BadFlt, BinaryGarbage)
+{
+    Bytes garbage(300);
+    for (std::size_t i = 0; i < garbage.size(); ++i) garbage[i] = std::uint8_t(i * 131 + 7);
+    EXPECT_EQ(readError(garbage), "truncated record at offset 0 (opcode 1930): 3472 bytes announced, 300 left in the file");
+}
+
+TEST(BadFlt, UnbalancedPushPop)
+{
+    const Bytes b = written();
+    Bytes extraPop = b;
+    extraPop.insert(extraPop.end(), {0, 11, 0, 4});
+    EXPECT_EQ(readError(extraPop), "unbalanced hierarchy: Pop record at offset " + std::to_string(b.size()) + " without a Push");
+    Bytes missingPop = b;
+    missingPop.resize(missingPop.size() - 4);
+    EXPECT_EQ(readError(missingPop), "unbalanced hierarchy: 1 Push record(s) without a Pop at the end of the file "
+                                     "(offset " + std::to_string(missingPop.size()) + ")");
+}
+
+// Regression: NaN coordinates used to reach the model (a silently wrong mesh).
+TEST(BadFlt, NonFiniteVertexSkipsItsFaces)
+{
+    for (auto geometry : {GeometryRecords::Faces, GeometryRecords::Meshes}) {
+        Bytes b = written(geometry);
+        const auto spans = test::recordSpans(b);
+        std::size_t xAt = 0;
+        if (geometry == GeometryRecords::Faces) xAt = firstRecord(spans, kVertexWithNormal).offset + 8;
+        else xAt = firstRecord(spans, 85).offset + 12;  // Local Vertex Pool: first vertex
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        std::uint64_t bits;
+        std::memcpy(&bits, &nan, 8);
+        for (int k = 0; k < 8; ++k) b[xAt + std::size_t(k)] = std::uint8_t(bits >> (56 - 8 * k));
+        LodModel model;
+        std::string error;
+        ReadStats stats;
+        ASSERT_TRUE(readOpenFlight(b.data(), b.size(), model, error, &stats)) << error;
+        EXPECT_GT(stats.skippedFaces, 0u);
+        EXPECT_EQ(model.triangleCount(), 2u);  // of 4: two use the first vertex
+        for (const Level& level : model.levels)
+            for (const Part& part : level.parts)
+                for (const Vec3d& p : part.positions)
+                    EXPECT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+    }
+}
