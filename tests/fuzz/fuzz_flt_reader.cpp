@@ -1,7 +1,8 @@
 // libFuzzer target: the OpenFlight reader on bytes from memory. A success must give a
-// model whose triangle indices stay inside their part; a failure must say why.
+// model whose triangles use finite vertices inside their part; a failure must say why.
 #include "flt_reader.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -20,6 +21,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (const auto& part : level.parts)
             for (const auto& t : part.triangles)
                 for (auto index : t)
-                    if (index >= part.positions.size()) std::abort();
+                    if (index >= part.positions.size() || !std::isfinite(part.positions[index][0]) ||
+                        !std::isfinite(part.positions[index][1]) || !std::isfinite(part.positions[index][2]))
+                        std::abort();
     return 0;
 }
