@@ -449,9 +449,9 @@ private:
         for (int layer = 0; layer < 8; ++layer)
             if (mask & (kPoolBaseUv >> layer))
                 stride += 8;
-        if (stride > 0 && in.remaining() / stride < count) {
+        if (stride == 0 ? count > 0 : in.remaining() / stride < count) {  // no attributes: nothing to hold
             error = "Local Vertex Pool at offset " + std::to_string(pos) + ": " + std::to_string(count) +
-                    " vertices announced, the record holds " + std::to_string(in.remaining() / stride);
+                    " vertices announced, the record holds " + std::to_string(stride ? in.remaining() / stride : 0);
             return false;
         }
         pendingPool_.assign(count, PoolVertex{});
