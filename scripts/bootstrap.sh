@@ -19,6 +19,10 @@ PACKAGES=(
   openscenegraph libopenscenegraph-dev
   libcoin-dev
 )
+# Fuzzing (tests/fuzz, CADLOD_BUILD_FUZZERS=ON): clang with libFuzzer.
+if [ "${CADLOD_FUZZ_DEPS:-0}" = 1 ]; then
+  PACKAGES+=(clang libclang-rt-14-dev)
+fi
 if [ "${CADLOD_BENCH_DEPS:-0}" = 1 ]; then
   PACKAGES+=(libmeshoptimizer-dev libcgal-dev libgmp-dev libmpfr-dev time gnuplot-nox)
 fi
