@@ -23,6 +23,16 @@ struct Owner {
     std::string name;
 };
 
+// The part name of a DEF'd node. A node that is also USE'd is several instances of one
+// definition: each is named after the nearest DEF above it too ("HOUSING_B/HOUSING"), so the
+// parts of an assembly stay told apart.
+inline std::string instanceName(const Node& node, const Owner& outer)
+{
+    if (node.useCount > 0 && !outer.name.empty())
+        return outer.name + "/" + node.defName;
+    return node.defName;
+}
+
 struct EvalContext {
     Scene& scene;
     const ImportOptions& options;

@@ -78,7 +78,7 @@ public:
             ctx_.scene.diagnostics.warn("too deep", node->where, "scene nesting too deep; subtree skipped");
             return;
         }
-        const Owner here = node->defName.empty() ? owner : ctx_.newOwner(node->defName);
+        const Owner here = node->defName.empty() ? owner : ctx_.newOwner(instanceName(*node, owner));
         const std::string& t = node->type;
         const std::string at = path + "/" + t;
         if (t == "Separator") {

@@ -81,7 +81,7 @@ public:
             ctx_.scene.diagnostics.warn("too deep", node->where, "scene nesting too deep; subtree skipped");
             return;
         }
-        const Owner here = node->defName.empty() ? owner : ctx_.newOwner(node->defName);
+        const Owner here = node->defName.empty() ? owner : ctx_.newOwner(instanceName(*node, owner));
         const std::string& type = node->type;
         if (type == "Transform" || type == "CADPart") {
             const Mat4 local = transformMatrix(readTransformFields(*node, "scale"));

@@ -30,6 +30,7 @@ struct Field {
 struct Node {
     std::string type;
     std::string defName;
+    int useCount = 0;               // USEs of this DEF: each use is another instance
     std::vector<Field> fields;
     std::vector<NodePtr> children;  // VRML 1.0 children
     std::string where;              // file:line:col of the type name

@@ -177,7 +177,10 @@ private:
             const Token nameTok = lex_.peek();
             const std::string name = word("a DEF name after USE");
             if (failed()) return nullptr;
-            if (NodePtr n = lookupDef(name)) return n;
+            if (NodePtr n = lookupDef(name)) {
+                ++n->useCount;
+                return n;
+            }
             diag_.warn("undefined USE", lex_.location(nameTok), "USE " + name + " has no DEF before it");
             return nullptr;
         }

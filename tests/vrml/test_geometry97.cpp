@@ -155,6 +155,20 @@ Group { children Shape { geometry Sphere {} } }
     EXPECT_TRUE(hasPoint(s, 6, 1, 1));
 }
 
+TEST(Vrml97Parts, UsedInstancesAreNamedAfterTheirEnclosingDef)
+{
+    // CAD assemblies DEF each placement and USE the shared part geometry in it.
+    const Scene s = load(R"(#VRML V2.0 utf8
+DEF HOUSING_A Transform { children DEF HOUSING Shape { geometry Box {} } }
+DEF HOUSING_B Transform { translation 5 0 0 children USE HOUSING }
+DEF SHAFT Transform { children Shape { geometry Sphere {} } }
+)");
+    ASSERT_EQ(s.parts.size(), 3u);
+    EXPECT_EQ(s.parts[0].name, "HOUSING_A/HOUSING");
+    EXPECT_EQ(s.parts[1].name, "HOUSING_B/HOUSING");
+    EXPECT_EQ(s.parts[2].name, "SHAFT");  // a DEF used once keeps its plain name
+}
+
 TEST(Vrml97Grouping, SwitchChoosesOneLodTakesTheFinestBillboardAnchorCollisionGroup)
 {
     const Scene s = load(R"(#VRML V2.0 utf8
