@@ -194,7 +194,8 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
 
     stats.facesAfter = m.fn;
     stats.verticesAfter = m.vn;
-    if (stats.ok && m.fn > stats.targetFaces && stats.targetFaces > 0 && stats.message.empty())
+    const bool faceTarget = params.targetFaces > 0 || params.reductionPerc > 0;  // 100 % asks for 0 faces
+    if (stats.ok && faceTarget && m.fn > stats.targetFaces && stats.message.empty())
         stats.message = "stopped at " + std::to_string(m.fn) + " faces, above the target of " +
                         std::to_string(stats.targetFaces) +
                         ": the remaining collapses would break a feature, the topology, the error bound or the "

@@ -17,8 +17,11 @@ inline void expectValidMesh(const TestMesh& m, bool inputHadNonFinite = false)
     for (const auto& v : m.vert)
         if (!v.IsD()) {
             ++liveVertices;
-            if (!inputHadNonFinite)
-                for (int k = 0; k < 3; ++k) ASSERT_TRUE(std::isfinite(v.cP()[k])) << "vertex " << (&v - &m.vert[0]);
+            if (!inputHadNonFinite) {
+                for (int k = 0; k < 3; ++k) {
+                    ASSERT_TRUE(std::isfinite(v.cP()[k])) << "vertex " << (&v - &m.vert[0]);
+                }
+            }
         }
     for (const auto& f : m.face) {
         if (f.IsD()) continue;

@@ -48,7 +48,9 @@ void checkOutcome(const TestMesh& m, const SimplifyStats& s, int target)
     ASSERT_TRUE(s.ok) << s.message;
     expectValidMesh(m);
     EXPECT_EQ(s.facesAfter, m.fn);
-    if (m.fn > target) EXPECT_FALSE(s.message.empty()) << m.fn << " faces for a target of " << target;
+    if (m.fn > target) {
+        EXPECT_FALSE(s.message.empty()) << m.fn << " faces for a target of " << target;
+    }
 }
 
 }  // namespace
