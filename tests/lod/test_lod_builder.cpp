@@ -37,14 +37,20 @@ struct Built {
     LodSetResult result;
 };
 
-void build(Built& b, const LodSetOptions& options)
+// Builds the set of whatever b.original holds.
+void buildFrom(Built& b, const LodSetOptions& options)
 {
-    makeSphereWithTwoParts(b.original);
     vcg::tri::UpdateTopology<TestMesh>::VertexFace(b.original);
     b.result = buildLodSet<TestMesh>(b.original, options, [&b](int) -> TestMesh& {
         b.levels.emplace_back();
         return b.levels.back();
     });
+}
+
+void build(Built& b, const LodSetOptions& options)
+{
+    makeSphereWithTwoParts(b.original);
+    buildFrom(b, options);
 }
 
 }  // namespace
@@ -145,13 +151,9 @@ TEST(LodBuilder, LevelsThatWouldNeverBeShownAreDroppedAndRenumbered)
     // A flat square: every level is lossless, so only the lightest is worth keeping.
     Built b;
     vcg::tri::Grid(b.original, 21, 21, 1.0f, 1.0f, nullptr);
-    vcg::tri::UpdateTopology<TestMesh>::VertexFace(b.original);
     LodSetOptions options;
     options.levels = "50 75";
-    b.result = buildLodSet<TestMesh>(b.original, options, [&b](int) -> TestMesh& {
-        b.levels.emplace_back();
-        return b.levels.back();
-    });
+    buildFrom(b, options);
     ASSERT_TRUE(b.result.ok()) << b.result.error;
     ASSERT_EQ(b.result.levels.size(), 2u);
     EXPECT_EQ(b.result.droppedLevels, std::vector<int>{1});
@@ -170,11 +172,7 @@ TEST(LodBuilder, ASingleTriangleIsASetOfOneLevelWithWarnings)
     v[1].P() = vcg::Point3f(1, 0, 0);
     v[2].P() = vcg::Point3f(0, 1, 0);
     vcg::tri::Allocator<TestMesh>::AddFace(b.original, &v[0], &v[1], &v[2]);
-    vcg::tri::UpdateTopology<TestMesh>::VertexFace(b.original);
-    b.result = buildLodSet<TestMesh>(b.original, LodSetOptions{}, [&b](int) -> TestMesh& {
-        b.levels.emplace_back();
-        return b.levels.back();
-    });
+    buildFrom(b, LodSetOptions{});
     ASSERT_TRUE(b.result.ok()) << b.result.error;
     EXPECT_TRUE(b.levels.empty());
     ASSERT_EQ(b.result.levels.size(), 1u);
