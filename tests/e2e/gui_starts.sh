@@ -4,6 +4,7 @@
 set -uo pipefail
 meshlab=$1
 export DISPLAY=$(cat "$2")
+xdotool getdisplaygeometry >/dev/null 2>&1 || { echo "FAIL: the test display $DISPLAY takes no clients"; exit 1; }
 log=$(mktemp)
 LD_PRELOAD="${CADLOD_SANITIZER_PRELOAD:-}" "$meshlab" >"$log" 2>&1 &
 pid=$!

@@ -13,9 +13,18 @@ start)
   echo $! > "$dir/pid"
   for _ in $(seq 1 100); do
     if [ -s "$dir/display.raw" ]; then
-      echo ":$(head -n 1 "$dir/display.raw" | tr -d '[:space:]')" > "$dir/display"
-      echo "Xvfb on $(cat "$dir/display")"
-      exit 0
+      display=":$(head -n 1 "$dir/display.raw" | tr -d '[:space:]')"
+      # Tests start as soon as this returns: wait until the server takes clients.
+      for _ in $(seq 1 100); do
+        if DISPLAY=$display xdotool getdisplaygeometry >/dev/null 2>&1; then
+          echo "$display" > "$dir/display"
+          echo "Xvfb on $display"
+          exit 0
+        fi
+        sleep 0.1
+      done
+      echo "Xvfb announced $display but takes no clients: $(cat "$dir/xvfb.log")" >&2
+      exit 1
     fi
     sleep 0.1
   done
