@@ -12,20 +12,6 @@ using namespace cadlod::test;
 
 namespace {
 
-std::vector<FlatTriangle> osgTriangles(const std::vector<OsgTriangle>& in)
-{
-    std::vector<FlatTriangle> out;
-    for (const OsgTriangle& t : in) {
-        FlatTriangle f;
-        f.p = t.position;
-        f.n = t.normal;
-        f.canonicalize();
-        out.push_back(f);
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
 std::string torusPly(const std::string& dir, TestMesh& torus)
 {
     makeTorusMesh(torus);

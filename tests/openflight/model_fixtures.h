@@ -3,6 +3,7 @@
 #pragma once
 
 #include "lod_model.h"
+#include "osg_probe.h"
 
 #include <algorithm>
 #include <array>
@@ -86,6 +87,21 @@ struct FlatTriangle {
     }
     bool operator<(const FlatTriangle& o) const { return p < o.p; }
 };
+
+// What OpenSceneGraph drew, in the same canonical, sorted form.
+inline std::vector<FlatTriangle> osgTriangles(const std::vector<OsgTriangle>& in)
+{
+    std::vector<FlatTriangle> out;
+    for (const OsgTriangle& t : in) {
+        FlatTriangle f;
+        f.p = t.position;
+        f.n = t.normal;
+        f.canonicalize();
+        out.push_back(f);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
 
 inline std::vector<FlatTriangle> flatTriangles(const flt::Part& part, float scale = 1.0f)
 {

@@ -33,20 +33,6 @@ std::string writeModel(const LodModel& model, const WriteOptions& o, const std::
     return path;
 }
 
-std::vector<FlatTriangle> osgTriangles(const std::vector<OsgTriangle>& in)
-{
-    std::vector<FlatTriangle> out;
-    for (const OsgTriangle& t : in) {
-        FlatTriangle f;
-        f.p = t.position;
-        f.n = t.normal;
-        f.canonicalize();
-        out.push_back(f);
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
 bool contains(const std::vector<std::string>& names, const std::string& name)
 {
     return std::find(names.begin(), names.end(), name) != names.end();
