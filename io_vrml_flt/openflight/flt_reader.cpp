@@ -5,6 +5,7 @@
 #include "triangle_strip.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -44,6 +45,13 @@ struct LastPrimary {
 };
 
 std::string opcodeText(std::uint16_t op) { return "opcode " + std::to_string(op); }
+
+std::string hex32(std::uint32_t v)
+{
+    char text[11];
+    std::snprintf(text, sizeof text, "0x%08x", unsigned(v));
+    return text;
+}
 
 class Reader {
 public:
@@ -449,9 +457,16 @@ private:
         for (int layer = 0; layer < 8; ++layer)
             if (mask & (kPoolBaseUv >> layer))
                 stride += 8;
-        if (stride == 0 ? count > 0 : in.remaining() / stride < count) {  // no attributes: nothing to hold
+        // Every vertex must take bytes in the record, so a pool never costs more memory than
+        // a fixed multiple of the file (a zero stride used to allocate up to ~177 GB).
+        if (stride == 0 && count > 0) {
             error = "Local Vertex Pool at offset " + std::to_string(pos) + ": " + std::to_string(count) +
-                    " vertices announced, the record holds " + std::to_string(stride ? in.remaining() / stride : 0);
+                    " vertices announced with no known attribute in the mask " + hex32(mask);
+            return false;
+        }
+        if (stride > 0 && in.remaining() / stride < count) {
+            error = "Local Vertex Pool at offset " + std::to_string(pos) + ": " + std::to_string(count) +
+                    " vertices announced, the record holds " + std::to_string(in.remaining() / stride);
             return false;
         }
         pendingPool_.assign(count, PoolVertex{});

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -52,7 +53,12 @@ void setLength(Bytes& b, std::size_t recordOffset, std::uint16_t length)
     b[recordOffset + 3] = std::uint8_t(length & 0xff);
 }
 
-constexpr std::uint16_t kVertexPalette = 67, kPop = 11, kVertexWithNormal = 69;
+void setU32(Bytes& b, std::size_t at, std::uint32_t v)
+{
+    for (int k = 0; k < 4; ++k) b[at + std::size_t(k)] = std::uint8_t(v >> (24 - 8 * k));
+}
+
+constexpr std::uint16_t kVertexPalette = 67, kPop = 11, kVertexWithNormal = 69, kLocalVertexPool = 85;
 
 }  // namespace
 
@@ -136,4 +142,33 @@ TEST(BadFlt, NonFiniteVertexSkipsItsFaces)
                 for (const Vec3d& p : part.positions)
                     EXPECT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
     }
+}
+
+// Regression (fuzz_flt_reader slow units): a Local Vertex Pool whose mask names no attribute
+// the reader knows takes 0 bytes a vertex, so its count was never checked against the record
+// and 11-16 million vertices (0.3-0.9 GB) were allocated from an 11 KB file.
+TEST(BadFlt, VertexPoolWithoutKnownAttributesIsAnError)
+{
+    for (std::uint32_t mask : {0x00000000u, 0x00002e00u}) {
+        Bytes b = written(GeometryRecords::Meshes);
+        const std::size_t at = firstRecord(test::recordSpans(b), kLocalVertexPool).offset;
+        setU32(b, at + 4, 0x00aaaaaau);  // vertex count
+        setU32(b, at + 8, mask);
+        char maskText[11];
+        std::snprintf(maskText, sizeof maskText, "0x%08x", mask);
+        EXPECT_EQ(readError(b), "Local Vertex Pool at offset " + std::to_string(at) +
+                                    ": 11184810 vertices announced with no known attribute in the mask " + maskText);
+    }
+}
+
+TEST(BadFlt, VertexPoolCountBeyondItsRecordIsAnError)
+{
+    Bytes b = written(GeometryRecords::Meshes);
+    const std::size_t at = firstRecord(test::recordSpans(b), kLocalVertexPool).offset;
+    const std::uint32_t written = std::uint32_t(b[at + 4]) << 24 | std::uint32_t(b[at + 5]) << 16 |
+                                  std::uint32_t(b[at + 6]) << 8 | b[at + 7];
+    ASSERT_GT(written, 0u);
+    setU32(b, at + 4, 0x00aaaaaau);
+    EXPECT_EQ(readError(b), "Local Vertex Pool at offset " + std::to_string(at) +
+                                ": 11184810 vertices announced, the record holds " + std::to_string(written));
 }
