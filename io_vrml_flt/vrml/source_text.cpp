@@ -2,6 +2,8 @@
 
 #include <zlib.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 
@@ -14,8 +16,20 @@ bool hasGzipMagic(const std::string& bytes)
            static_cast<unsigned char>(bytes[1]) == 0x8b;
 }
 
-std::string inflateGzip(const std::string& in, const std::string& name, size_t maxBytes, std::string& out)
+std::string overTheBound(const std::string& name, size_t compressedBytes, size_t absoluteCap)
 {
+    const size_t bound = inflatedSizeBound(compressedBytes, absoluteCap);
+    if (bound == absoluteCap)
+        return name + ": gzip data inflates beyond " + std::to_string(bound >> 20) + " MB; refusing (gzip bomb?)";
+    return name + ": gzip data inflates beyond " + std::to_string(bound >> 20) + " MB from " +
+           std::to_string(compressedBytes) + " compressed bytes (at most " + std::to_string(kMaxInflationRatio) +
+           " times the compressed size, or " + std::to_string(kInflationFloorBytes >> 20) +
+           " MB); refusing (gzip bomb?)";
+}
+
+std::string inflateGzip(const std::string& in, const std::string& name, size_t absoluteCap, std::string& out)
+{
+    const size_t maxBytes = inflatedSizeBound(in.size(), absoluteCap);
     z_stream zs{};
     if (inflateInit2(&zs, 15 + 32) != Z_OK)  // 32: accept gzip and zlib headers
         return name + ": cannot initialise zlib";
@@ -40,8 +54,7 @@ std::string inflateGzip(const std::string& in, const std::string& name, size_t m
         const size_t produced = sizeof buffer - zs.avail_out;
         if (out.size() + produced > maxBytes) {
             inflateEnd(&zs);
-            return name + ": gzip data inflates beyond " + std::to_string(maxBytes >> 20) +
-                   " MB; refusing (gzip bomb?)";
+            return overTheBound(name, in.size(), absoluteCap);
         }
         out.append(buffer, produced);
         if (zs.avail_in == 0 && inLeft > 0) {
@@ -60,6 +73,13 @@ std::string inflateGzip(const std::string& in, const std::string& name, size_t m
 }
 
 }  // namespace
+
+size_t inflatedSizeBound(size_t compressedBytes, size_t absoluteCap)
+{
+    const size_t relative = compressedBytes > SIZE_MAX / kMaxInflationRatio ? SIZE_MAX
+                                                                            : compressedBytes * kMaxInflationRatio;
+    return std::min(absoluteCap, std::max(kInflationFloorBytes, relative));
+}
 
 SourceText decodeSourceBytes(std::string bytes, const std::string& name, size_t maxInflatedBytes)
 {

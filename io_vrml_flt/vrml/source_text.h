@@ -14,8 +14,18 @@ struct SourceText {
     bool ok() const { return error.empty(); }
 };
 
-// Default bound on inflated size: generous for CAD assemblies, fatal for gzip bombs.
+// Absolute bound on inflated size: generous for CAD assemblies, fatal for gzip bombs.
 inline constexpr size_t kDefaultMaxInflatedBytes = size_t(8) << 30;
+
+// Relative bound, so that memory follows the file size: text VRML compresses 5-40 times
+// (docs/reliability.md: 7x for generated CAD files, at most 36x in the corpus), deflate
+// at most ~1032 times. Below the floor a file is never refused for its ratio.
+inline constexpr size_t kMaxInflationRatio = 256;
+inline constexpr size_t kInflationFloorBytes = size_t(16) << 20;
+
+// What `compressedBytes` of gzip may inflate to: the smaller of `absoluteCap` and the
+// larger of the floor and kMaxInflationRatio times the compressed size.
+size_t inflatedSizeBound(size_t compressedBytes, size_t absoluteCap = kDefaultMaxInflatedBytes);
 
 // Raw bytes of a file; false with `error` set when it cannot be read.
 bool readFileBytes(const std::string& path, std::string& bytes, std::string& error);

@@ -2,11 +2,13 @@
 // the bad part skipped) and that nothing crashes. Cases already pinned by tests/vrml are
 // listed in docs/reliability.md instead of repeated here.
 #include "vrml/importer.h"
+#include "vrml/source_text.h"
 
 #include <gtest/gtest.h>
 #include <zlib.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -250,6 +252,39 @@ TEST(BadVrml, GzipBombIsRefusedAtTheBound)
     ASSERT_LT(bomb.size(), 128u * 1024u);
     const ImportResult r = importVrmlText(bomb, "bomb.wrz", options);
     EXPECT_EQ(r.error, "bomb.wrz: gzip data inflates beyond 1 MB; refusing (gzip bomb?)");
+}
+
+// With the default bound a bomb is refused at kMaxInflationRatio times its compressed
+// size, not at the absolute 8 GiB: memory follows the file size.
+TEST(BadVrml, GzipBombIsRefusedAtItsRatioWithTheDefaultBound)
+{
+    const std::string bomb = gzip(kHeader + std::string(80 << 20, ' '));
+    const std::size_t bound = bomb.size() * kMaxInflationRatio;
+    ASSERT_GT(bound, kInflationFloorBytes);  // the ratio binds, not the floor
+    const ImportResult r = importVrmlText(bomb, "bomb.wrz");
+    EXPECT_EQ(r.error, "bomb.wrz: gzip data inflates beyond " + std::to_string(bound >> 20) + " MB from " +
+                           std::to_string(bomb.size()) +
+                           " compressed bytes (at most 256 times the compressed size, or 16 MB); refusing (gzip bomb?)");
+}
+
+TEST(BadVrml, SmallGzipBombIsRefusedAtTheFloor)
+{
+    const std::string bomb = gzip(kHeader + std::string(20 << 20, ' '));
+    ASSERT_LT(bomb.size() * kMaxInflationRatio, kInflationFloorBytes);
+    const ImportResult r = importVrmlText(bomb, "small.wrz");
+    EXPECT_EQ(r.error, "small.wrz: gzip data inflates beyond 16 MB from " + std::to_string(bomb.size()) +
+                           " compressed bytes (at most 256 times the compressed size, or 16 MB); refusing (gzip bomb?)");
+}
+
+TEST(BadVrml, InflatedSizeBoundIsRelativeWithAFloorAndTheAbsoluteCap)
+{
+    const std::size_t MiB = std::size_t(1) << 20;
+    EXPECT_EQ(inflatedSizeBound(0), 16 * MiB);
+    EXPECT_EQ(inflatedSizeBound(MiB / 64), 16 * MiB);  // 256 x 16 KiB = 4 MiB: the floor
+    EXPECT_EQ(inflatedSizeBound(MiB), 256 * MiB);
+    EXPECT_EQ(inflatedSizeBound(64 * MiB), kDefaultMaxInflatedBytes);  // 16 GiB relative: capped at 8 GiB
+    EXPECT_EQ(inflatedSizeBound(SIZE_MAX / 2), kDefaultMaxInflatedBytes);  // no overflow
+    EXPECT_EQ(inflatedSizeBound(MiB, MiB), MiB);  // an explicit cap below the floor wins
 }
 
 TEST(BadVrml, NonUtf8NamesAreKeptByteForByte)
