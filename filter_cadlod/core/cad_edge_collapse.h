@@ -405,8 +405,8 @@ private:
                 continue;
             const PlacementScore s = score(ctx, cand[i].p, worstBefore);
             anyFlip |= s.flipped;
-            if (s.valid && (best < 0 || s.meanCompactness > bestScore.minCompactness ||
-                            (s.meanCompactness == bestScore.minCompactness && cand[i].cost < cand[best].cost))) {
+            if (s.valid && (best < 0 || s.meanCompactness > bestScore.meanCompactness ||
+                            (s.meanCompactness == bestScore.meanCompactness && cand[i].cost < cand[best].cost))) {
                 best = i;
                 bestScore = s;
             }
