@@ -1,8 +1,10 @@
 // Per-vertex error quadrics for the CAD edge collapse (Garland–Heckbert):
 //  - every face adds its plane, weighted by its area, to its three vertices;
 //  - every feature edge (boundary, crease, part border) adds, for each face along it, the
-//    plane through the edge perpendicular to that face, weighted by boundaryWeight·|e|²
-//    (an area, like the face planes), so features keep their line;
+//    plane through the edge perpendicular to that face, weighted by boundaryWeight × the
+//    face's area, so that moving the edge sideways by d costs what moving that face off
+//    its plane by d costs. (A weight of |e|² would make the long thin faces CAD exporters
+//    put along features nearly free to slide: holes closed up at 90 % reduction.)
 //  - planarQuadric adds the same edge planes with a tiny weight on all other edges.
 // The accumulated face area is kept beside each quadric, so sqrt(cost / area) is an RMS
 // distance in model units: the collapse error reported and bounded by maxError.
@@ -90,7 +92,7 @@ private:
         for (int j = 0; j < 3; ++j) {
             const double weight = isFeatureEdge(f, j) ? w.feature : w.planar;
             if (weight > 0)
-                addEdgePlane(f, p[j], p[(j + 1) % 3], n, weight, j);
+                addEdgePlane(f, p[j], p[(j + 1) % 3], n, weight * std::max(area, 0.0), j);
         }
     }
 
@@ -104,7 +106,7 @@ private:
             return;
         vcg::Point3d n = faceNormal ^ e;
         n.Normalize();
-        const Quadric q = planeQuadric(n, n * a, weight * len2);
+        const Quadric q = planeQuadric(n, n * a, weight);
         quadric(f.V(j)) += q;
         quadric(f.V((j + 1) % 3)) += q;
     }

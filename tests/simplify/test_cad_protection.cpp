@@ -120,11 +120,17 @@ TEST(SimplifyProtection, StraightCreasesStayExactlyInPlace)
 
 TEST(SimplifyProtection, CurvedCreasesStaySharpAndClose)
 {
+    // Without the keyway: where it runs out into the end chamfer the surface is warped,
+    // and any coarse triangulation of it has sharp edges of its own.
     TestMesh original, m;
-    makeShaft(original, 256);
+    CadBuilder b;
+    RevolveSpec spec = shaftSpec(256);
+    spec.keywayHalfAngle = 0;
+    revolve(b, shaftProfile(), spec);
+    b.build(original);
     copyMesh(m, original);
     const std::vector<Segment> before = creaseSegments(original, 30);
-    const SimplifyStats s = simplify(m, targetParams(original.fn / 4));
+    const SimplifyStats s = simplify(m, targetParams(original.fn / 8));
     ASSERT_TRUE(s.ok) << s.message;
     const std::vector<Segment> after = creaseSegments(m, 30);
     const double diag = original.bbox.Diag();
