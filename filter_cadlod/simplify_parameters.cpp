@@ -31,7 +31,8 @@ void addPlacementParameters(RichParameterList& par)
                            "Never create a triangle less compact than this, unless the neighbourhood was already "
                            "worse."));
     par.addParam(RichFloat("qualityThreshold", d.qualityThreshold, "Quality threshold",
-                           "Collapses whose new triangles have a mean compactness below this wait longer."));
+                           "Collapses that cost (almost) no error, in flat regions and along straight lines, wait longer "
+                           "when their new triangles have a mean compactness below this. 0: ordered by area only."));
     par.addParam(RichBool("planarQuadric", d.planarQuadric, "Planar quadrics",
                           "Tiny extra quadrics on every edge: steadier flat regions."));
     par.addParam(RichBool("keepPartBorders", d.keepPartBorders, "Keep part borders",

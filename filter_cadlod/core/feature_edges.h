@@ -16,6 +16,7 @@ namespace cadlod {
 struct FeatureBits {
     int edge[3] = {0, 0, 0};  // face bit: edge j (V(j), V(j+1)) is a feature edge
     int locked = 0;           // vertex bit: never collapse an edge touching this vertex
+    int boundary = 0;         // vertex bit: on a kept boundary, never leaves its place
 };
 
 struct FeatureEdgeCounts {
@@ -61,8 +62,8 @@ bool repeatsVertex(const FaceType& f)
     return f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(2) == f.cV(0);
 }
 
-// Marks feature edges with bits.edge[j] on every face sharing them and non-moving
-// vertices with bits.locked. `partOf(face)` returns the face's part id (faces of
+// Marks feature edges with bits.edge[j] on every face sharing them, non-moving
+// vertices with bits.locked and the vertices of kept boundary edges with bits.boundary. `partOf(face)` returns the face's part id (faces of
 // different parts meeting at an edge make a part border); pass a function returning a
 // constant to ignore parts. Needs VF adjacency.
 template <class MeshType, class PartOf>
@@ -77,8 +78,10 @@ FeatureEdgeCounts markFeatureEdges(MeshType& m, const FeatureBits& bits, double 
     for (FaceType& f : m.face) {
         if (f.IsD())
             continue;
-        for (int j = 0; j < 3; ++j)
+        for (int j = 0; j < 3; ++j) {
             f.ClearUserBit(bits.edge[j]);
+            f.V(j)->ClearUserBit(bits.boundary);
+        }
         if (repeatsVertex(f)) {
             ++counts.degenerateFaces;
             for (int j = 0; j < 3; ++j)
@@ -111,6 +114,10 @@ FeatureEdgeCounts markFeatureEdges(MeshType& m, const FeatureBits& bits, double 
                 if (faces == 1) {
                     ++counts.boundary;
                     feature = boundaryIsFeature;
+                    if (feature) {
+                        v.SetUserBit(bits.boundary);
+                        other->SetUserBit(bits.boundary);
+                    }
                 } else if (faces == 2) {
                     auto* f = static_cast<FaceType*>(around[i].face);
                     auto* g = static_cast<FaceType*>(around[i + 1].face);

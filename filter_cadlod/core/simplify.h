@@ -115,8 +115,11 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
     for (int j = 0; j < 3; ++j)
         ctx.bits.edge[j] = FaceType::NewBitFlag();
     ctx.bits.locked = VertexType::NewBitFlag();
-    for (VertexType& v : m.vert)
+    ctx.bits.boundary = VertexType::NewBitFlag();
+    for (VertexType& v : m.vert) {
         v.ClearUserBit(ctx.bits.locked);
+        v.ClearUserBit(ctx.bits.boundary);
+    }
 
     stats.diagonal = detail::usedDiagonal(m, ctx.bits.locked);
     if (stats.diagonal > 0) {
@@ -186,8 +189,11 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
     for (FaceType& f : m.face)
         for (int j = 0; j < 3; ++j)
             f.ClearUserBit(ctx.bits.edge[j]);
-    for (VertexType& v : m.vert)
+    for (VertexType& v : m.vert) {
         v.ClearUserBit(ctx.bits.locked);
+        v.ClearUserBit(ctx.bits.boundary);
+    }
+    VertexType::DeleteBitFlag(ctx.bits.boundary);
     VertexType::DeleteBitFlag(ctx.bits.locked);
     for (int j = 2; j >= 0; --j)
         FaceType::DeleteBitFlag(ctx.bits.edge[j]);

@@ -33,7 +33,7 @@ struct SimplifyParams {
     bool normalCheck = true;         // reject collapses that turn a face by > normalThreshold
     double normalThreshold = 60.0;   // degrees
     double minCompactness = 0.05;    // never create a face below this unless it improves the worst
-    double qualityThreshold = 0.3;   // collapses leaving faces below this compactness wait longer
+    double qualityThreshold = 0.3;   // free collapses leaving faces below this compactness wait longer
     bool planarQuadric = false;      // tiny edge quadrics everywhere: steadier flat regions
     bool keepPartBorders = true;     // edges between faces of different cadlod_part ids are features
     bool selectedOnly = false;       // only collapse vertices whose faces are all selected
