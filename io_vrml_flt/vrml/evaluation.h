@@ -5,6 +5,7 @@
 
 #include "vrml/face_set_emitter.h"
 #include "vrml/importer.h"
+#include "vrml/instancing_budget.h"
 #include "vrml/node.h"
 #include "vrml/primitives.h"
 
@@ -47,9 +48,20 @@ struct EvalContext {
     // The first texture url that exists relative to baseDir; "" (and a warning) if none.
     std::string resolveTexture(const std::vector<std::string>& urls, const std::string& where);
 
+    // Before `nodes` are evaluated: false, with `error` set, if they would take the scene
+    // beyond the triangle limit. Every traversal stops once `error` is set.
+    bool admit(const std::vector<NodePtr>& nodes, const std::vector<UseSite>& useSites, bool vrml1);
+    bool admit(const NodePtr& node, bool vrml1) { return admit(std::vector<NodePtr>{node}, {}, vrml1); }
+    bool stopped() const { return !error.empty(); }
+
     int nextOwnerId = 0;
     std::map<std::tuple<int, float, float, float, float, std::string>, size_t> partIndex;
+    InstancingBudget budget;
+    std::string error;  // fatal: the scene would exceed the triangle limit
 };
+
+// VRML97 grouping nodes whose `children` are traversed as they are (Transform aside).
+bool isGroupNode97(const std::string& type);
 
 void evaluateVrml97(const std::vector<NodePtr>& roots, const Mat4& world, const Owner& owner, const std::string& path,
                     EvalContext& ctx);

@@ -73,7 +73,7 @@ public:
 
     void traverse(const NodePtr& node, State& state, const Owner& owner, const std::string& path, int depth)
     {
-        if (!node) return;
+        if (!node || ctx_.stopped()) return;
         if (depth > ctx_.options.maxNesting) {
             ctx_.scene.diagnostics.warn("too deep", node->where, "scene nesting too deep; subtree skipped");
             return;
@@ -97,7 +97,7 @@ public:
         } else if (t == "WWWInline") {
             const FieldValue* name = node->field("name");
             ctx_.loadInline(name ? name->strings : std::vector<std::string>{}, node->where, state.world, here);
-        } else if (!property(*node, state) && !shape(*node, state, here, at)) {
+        } else if (!property(*node, state) && !shape(node, state, here, at)) {
             if (!ignoredNodeTypes().count(t))
                 ctx_.scene.diagnostics.warn("unknown node", node->where, "node " + t + " ignored");
         }
@@ -181,8 +181,9 @@ private:
         return {rgba[0], rgba[1], rgba[2], rgba[3]};
     }
 
-    bool shape(const Node& n, State& s, const Owner& owner, const std::string& path)
+    bool shape(const NodePtr& node, State& s, const Owner& owner, const std::string& path)
     {
+        const Node& n = *node;
         const std::string& t = n.type;
         if (t == "IndexedLineSet") {
             ++ctx_.scene.stats.lineSets;
@@ -193,6 +194,7 @@ private:
             return true;
         }
         if (t != "IndexedFaceSet" && t != "Cube" && t != "Sphere" && t != "Cylinder" && t != "Cone") return false;
+        if (!ctx_.admit(node, true)) return true;
         ++ctx_.scene.stats.shapes;
         const std::vector<float> materials = materialsRgba(s);
         Part& part = ctx_.part(owner.id < 0 ? ctx_.newOwner(path) : owner, firstMaterial(materials), s.texture);

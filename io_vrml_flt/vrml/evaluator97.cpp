@@ -25,13 +25,6 @@ const std::set<std::string>& ignoredNodeTypes()
     return types;
 }
 
-const std::set<std::string>& groupNodeTypes()
-{
-    static const std::set<std::string> types{"Group", "Billboard", "Anchor", "Collision", "StaticGroup",
-                                             "CADAssembly", "CADLayer", "CADFace"};
-    return types;
-}
-
 const FieldValue* nodesField(const Node& n, const char* name)
 {
     const FieldValue* v = n.field(name);
@@ -76,7 +69,7 @@ public:
 
     void traverse(const NodePtr& node, const Mat4& world, const Owner& owner, const std::string& path, int depth)
     {
-        if (!node) return;
+        if (!node || ctx_.stopped()) return;
         if (depth > ctx_.options.maxNesting) {
             ctx_.scene.diagnostics.warn("too deep", node->where, "scene nesting too deep; subtree skipped");
             return;
@@ -86,7 +79,7 @@ public:
         if (type == "Transform" || type == "CADPart") {
             const Mat4 local = transformMatrix(readTransformFields(*node, "scale"));
             traverseAll(childNodes(*node, "children"), world * local, here, path + "/" + type, depth);
-        } else if (groupNodeTypes().count(type)) {
+        } else if (isGroupNode97(type)) {
             traverseAll(childNodes(*node, "children"), world, here, path + "/" + type, depth);
         } else if (type == "Switch") {
             traverseSwitch(*node, world, here, path, depth);
@@ -96,7 +89,7 @@ public:
         } else if (type == "Inline") {
             ctx_.loadInline(stringsField(*node, "url"), node->where, world, here);
         } else if (type == "Shape") {
-            shape(*node, world, here.id < 0 ? ctx_.newOwner(path + "/Shape") : here);
+            if (ctx_.admit(node, false)) shape(*node, world, here.id < 0 ? ctx_.newOwner(path + "/Shape") : here);
         } else if (!ignoredNodeTypes().count(type)) {
             ctx_.scene.diagnostics.warn("unknown node", node->where, "node " + type + " ignored");
         }
@@ -264,6 +257,13 @@ private:
 };
 
 }  // namespace
+
+bool isGroupNode97(const std::string& type)
+{
+    static const std::set<std::string> types{"Group", "Billboard", "Anchor", "Collision", "StaticGroup",
+                                             "CADAssembly", "CADLayer", "CADFace"};
+    return types.count(type) > 0;
+}
 
 void countShapeTriangles(const std::string& type, size_t before, const Part& part, SceneStats& stats)
 {

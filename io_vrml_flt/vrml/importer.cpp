@@ -25,6 +25,15 @@ Part& EvalContext::part(const Owner& owner, const std::array<float, 4>& color, c
     return p;
 }
 
+bool EvalContext::admit(const std::vector<NodePtr>& nodes, const std::vector<UseSite>& useSites, bool vrml1)
+{
+    if (stopped()) return false;
+    const SceneStats& stats = scene.stats;
+    const uint64_t limit = triangleLimit(options.maxTriangles, options.maxTrianglesPerInputByte, stats.bytesRead);
+    error = budget.check(nodes, useSites, vrml1, stats.meshTriangles + stats.roundPrimitiveTriangles, limit);
+    return error.empty();
+}
+
 std::string EvalContext::resolveTexture(const std::vector<std::string>& urls, const std::string& where)
 {
     for (const std::string& url : urls) {
@@ -66,7 +75,7 @@ std::string stripUrl(std::string url, std::string* fragment = nullptr)
 
 class Importer {
 public:
-    explicit Importer(const ImportOptions& options) : options_(options), ctx_{result_.scene, options, {}, {}, {}, 0, {}}
+    explicit Importer(const ImportOptions& options) : options_(options), ctx_{result_.scene, options, {}, {}, {}, 0, {}, {}, {}}
     {
         ctx_.emit.recomputeNormals = options.recomputeNormals;
         ctx_.loadInline = [this](const std::vector<std::string>& urls, const std::string& where, const Mat4& world,
@@ -106,6 +115,11 @@ public:
         openFiles_.push_back(canonical(fileName));
         evaluate(parsed, fileName, Mat4::scale({options_.unitScale, options_.unitScale, options_.unitScale}), Owner{},
                  fs::path(fileName).filename().string());
+        if (ctx_.stopped()) {
+            result_.error = ctx_.error;
+            result_.scene.parts.clear();
+            return std::move(result_);
+        }
         dropEmptyParts();
         return std::move(result_);
     }
@@ -140,9 +154,11 @@ private:
     void evaluate(const ParsedFile& parsed, const std::string& fileName, const Mat4& world, const Owner& owner,
                   const std::string& path)
     {
+        const bool vrml1 = parsed.version == VrmlVersion::V1;
+        if (!ctx_.admit(parsed.roots, parsed.rootUseSites, vrml1)) return;
         const std::string savedDir = ctx_.baseDir;
         ctx_.baseDir = directoryOf(fileName);
-        if (parsed.version == VrmlVersion::V1) evaluateVrml10(parsed.roots, world, owner, path, ctx_);
+        if (vrml1) evaluateVrml10(parsed.roots, world, owner, path, ctx_);
         else evaluateVrml97(parsed.roots, world, owner, path, ctx_);
         ctx_.baseDir = savedDir;
     }

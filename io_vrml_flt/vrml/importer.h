@@ -5,6 +5,7 @@
 #include "vrml/scene.h"
 #include "vrml/source_text.h"
 
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -16,6 +17,12 @@ struct ImportOptions {
     int maxInlineDepth = 32;
     int maxNesting = 400;
     size_t maxInflatedBytes = kDefaultMaxInflatedBytes;
+    // Triangle limit of the scene, checked before anything is expanded (DEF/USE instancing
+    // multiplies geometry): the larger of maxTriangles and maxTrianglesPerInputByte x the
+    // bytes read (inflated, inlines included). 50 M triangles take 3-7 GB in the Scene
+    // (24-140 bytes each, welded to unwelded) and as much again in MeshLab's layer.
+    uint64_t maxTriangles = 50'000'000;
+    double maxTrianglesPerInputByte = 1.0;
     std::function<void(double fraction)> progress;  // main file parse progress, 0..1
 };
 

@@ -13,6 +13,13 @@ namespace cadlod::vrml {
 struct Node;
 using NodePtr = std::shared_ptr<Node>;
 
+// A node reference written as `USE name`: its index in the node list and where the USE
+// is (file:line:col), so that an error about instancing can point at the USE itself.
+struct UseSite {
+    size_t index = 0;
+    std::string where;
+};
+
 struct FieldValue {
     enum class Kind { Empty, Floats, Ints, Strings, Words, Nodes, IsRef };
     Kind kind = Kind::Empty;
@@ -20,6 +27,7 @@ struct FieldValue {
     std::shared_ptr<std::vector<int32_t>> ints;
     std::vector<std::string> strings;  // Strings, Words (enums, TRUE/FALSE, bit mask parts), IsRef name
     std::vector<NodePtr> nodes;        // null entries for NULL
+    std::vector<UseSite> useSites;     // the entries of `nodes` written as USE
 };
 
 struct Field {
@@ -33,6 +41,7 @@ struct Node {
     int useCount = 0;               // USEs of this DEF: each use is another instance
     std::vector<Field> fields;
     std::vector<NodePtr> children;  // VRML 1.0 children
+    std::vector<UseSite> childUseSites;  // the entries of `children` written as USE
     std::string where;              // file:line:col of the type name
 
     const FieldValue* field(const char* name) const

@@ -55,7 +55,7 @@ public:
     ParsedFile run()
     {
         ParsedFile file;
-        parseStatements(file.roots, TokenKind::End);
+        parseStatements(file.roots, file.rootUseSites, TokenKind::End);
         file.protos = protoScopes_.front();
         return file;
     }
@@ -106,7 +106,7 @@ private:
         }
     }
 
-    void parseStatements(std::vector<NodePtr>& out, TokenKind terminator)
+    void parseStatements(std::vector<NodePtr>& out, std::vector<UseSite>& useSites, TokenKind terminator)
     {
         while (!failed()) {
             const Token& t = lex_.peek();
@@ -115,8 +115,7 @@ private:
                 fail(t, "expected a node, found " + describe(t));
                 return;
             }
-            if (!parseStatementKeyword())
-                if (NodePtr n = parseNode()) out.push_back(std::move(n));
+            if (!parseStatementKeyword()) appendNodeAfter(lex_.next(), out, useSites);
         }
     }
 
@@ -168,6 +167,15 @@ private:
             return nullptr;
         }
         return parseNodeAfter(t);
+    }
+
+    // Parses the node starting at `t` and appends it (if any) to `nodes`, remembering a USE.
+    void appendNodeAfter(const Token& t, std::vector<NodePtr>& nodes, std::vector<UseSite>& useSites)
+    {
+        NodePtr n = parseNodeAfter(t);
+        if (!n) return;
+        if (t.text == "USE") useSites.push_back({nodes.size(), lex_.location(t)});
+        nodes.push_back(std::move(n));
     }
 
     NodePtr parseNodeAfter(const Token& t)
@@ -224,7 +232,7 @@ private:
                 return;
             }
             if (t.text == "DEF" || t.text == "USE") {
-                if (NodePtr child = parseNodeAfter(t)) node.children.push_back(std::move(child));
+                appendNodeAfter(t, node.children, node.childUseSites);
                 continue;
             }
             if ((t.text == "ROUTE" || t.text == "PROTO" || t.text == "EXTERNPROTO") && parseStatementKeywordAfter(t))
@@ -344,7 +352,7 @@ private:
                 if (readNonFiniteNumber(name, w, v)) break;
                 if (w.text == "DEF" || w.text == "USE" || w.text == "NULL" || lex_.peek().kind == TokenKind::LBrace) {
                     v.kind = FieldValue::Kind::Nodes;
-                    if (NodePtr n = parseNodeAfter(w)) v.nodes.push_back(std::move(n));
+                    appendNodeAfter(w, v.nodes, v.useSites);
                 } else if (w.text != "ROUTE" || !parseStatementKeywordAfter(w)) {
                     v.kind = FieldValue::Kind::Words;
                     v.strings.emplace_back(w.text);
@@ -379,7 +387,7 @@ private:
         }
         if (w.text == "DEF" || w.text == "USE" || w.text == "NULL" || lex_.peek().kind == TokenKind::LBrace) {
             v.kind = FieldValue::Kind::Nodes;
-            if (NodePtr n = parseNodeAfter(w)) v.nodes.push_back(std::move(n));
+            appendNodeAfter(w, v.nodes, v.useSites);
             return;
         }
         v.kind = FieldValue::Kind::Words;
@@ -419,7 +427,8 @@ private:
         }
         defScopes_.emplace_back();
         protoScopes_.emplace_back();
-        parseStatements(decl->body, TokenKind::RBrace);
+        std::vector<UseSite> bodyUseSites;  // only the body's first node is instantiated
+        parseStatements(decl->body, bodyUseSites, TokenKind::RBrace);
         defScopes_.pop_back();
         protoScopes_.pop_back();
         --depth_;

@@ -25,6 +25,7 @@ using ProtoTable = std::map<std::string, std::shared_ptr<ProtoDecl>>;
 struct ParsedFile {
     VrmlVersion version = VrmlVersion::Unknown;
     std::vector<NodePtr> roots;
+    std::vector<UseSite> rootUseSites;  // the roots written as USE
     ProtoTable protos;  // top-level PROTO declarations (used to resolve EXTERNPROTO)
     std::string error;  // fatal: not a VRML file
 };

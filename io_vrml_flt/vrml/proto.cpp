@@ -22,6 +22,7 @@ public:
         n->fields.reserve(source->fields.size());
         for (const Field& f : source->fields) n->fields.push_back({f.name, copyValue(f.value)});
         for (const NodePtr& c : source->children) n->children.push_back(copy(c));
+        n->childUseSites = source->childUseSites;
         return n;
     }
 
