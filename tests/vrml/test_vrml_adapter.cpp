@@ -23,6 +23,22 @@ public:
               QWidget*) override { return false; }
 };
 
+// vcglib 2020.09's ~TriMesh leaves named attributes allocated (ClearAttributes is commented
+// out there): the layers the adapter filled free theirs before the document deletes them.
+class LayerAttributesRelease {
+public:
+    explicit LayerAttributesRelease(MeshDocument& doc) : doc_(doc) {}
+    LayerAttributesRelease(const LayerAttributesRelease&) = delete;
+    LayerAttributesRelease& operator=(const LayerAttributesRelease&) = delete;
+    ~LayerAttributesRelease()
+    {
+        for (MeshModel* m : doc_.meshList) m->cm.ClearAttributes();
+    }
+
+private:
+    MeshDocument& doc_;
+};
+
 struct Opened {
     bool ok = false;
     int mask = 0;
@@ -51,6 +67,7 @@ protected:
 
     QTemporaryDir dir_;
     MeshDocument doc_;
+    LayerAttributesRelease release_{doc_};  // destroyed before doc_
     NullIoPlugin plugin_;
     MeshModel* m_ = nullptr;
 };
@@ -127,6 +144,22 @@ TEST_F(VrmlAdapter, UnreadableFileFailsWithMessage)
     EXPECT_FALSE(o.ok);
     EXPECT_TRUE(o.error.contains("not a VRML file")) << o.error.toStdString();
     EXPECT_TRUE(o.error.contains("x.wrl"));
+}
+
+TEST_F(VrmlAdapter, InstancingBombFailsWithTheUseThatCrossesTheLimit)
+{
+    std::string text = "#VRML V2.0 utf8\nDEF L0 Shape { geometry Box {} }\n";
+    for (int i = 1; i <= 7; ++i) {
+        text += "DEF L" + std::to_string(i) + " Group { children [";
+        for (int k = 0; k < 10; ++k) text += " USE L" + std::to_string(i - 1);
+        text += " ] }\n";
+    }
+    const std::string path = write("bomb.wrl", text);
+    const Opened o = open(path);
+    EXPECT_FALSE(o.ok);
+    EXPECT_EQ(o.error.toStdString(),
+              path + ":9:48: USE L6 would make the scene exceed 50000000 triangles (instancing limit)");
+    EXPECT_EQ(m_->cm.FN(), 0);
 }
 
 TEST_F(VrmlAdapter, TextureCoordinatesBecomeWedgeTexCoordsWithTheTexture)
