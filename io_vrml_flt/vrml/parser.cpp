@@ -50,6 +50,8 @@ public:
     {
         defScopes_.emplace_back();
         protoScopes_.emplace_back();
+        const double relative = options.maxProtoCopiesPerInputByte * double(text.size());
+        protoCopyLimit_ = relative > double(options.maxProtoCopies) ? size_t(relative) : options.maxProtoCopies;
     }
 
     ParsedFile run()
@@ -57,6 +59,7 @@ public:
         ParsedFile file;
         parseStatements(file.roots, file.rootUseSites, TokenKind::End);
         file.protos = protoScopes_.front();
+        file.error = fatal_;
         return file;
     }
 
@@ -463,9 +466,23 @@ private:
             if (!proto.resolved) return nullptr;
             body = proto.resolved.get();
         }
+        if (!admitCopies(*body, instance)) return nullptr;
         NodePtr n = instantiateProto(*body, instance);
         if (n) n->where = instance.where;
         return n;
+    }
+
+    bool admitCopies(ProtoDecl& body, const Node& instance)
+    {
+        const size_t copies = instanceNodeCount(body);
+        if (protoCopies_ + copies <= protoCopyLimit_) {
+            protoCopies_ += copies;
+            return true;
+        }
+        fatal_ = instance.where + ": PROTO " + instance.type + " instance would make the PROTO copies exceed " +
+                 std::to_string(protoCopyLimit_) + " nodes (instancing limit)";
+        failed_ = true;
+        return false;
     }
 
     NodePtr lookupDef(const std::string& name) const
@@ -490,6 +507,9 @@ private:
     std::vector<std::unordered_map<std::string, NodePtr>> defScopes_;
     std::vector<ProtoTable> protoScopes_;
     bool failed_ = false;
+    std::string fatal_;  // ends the import (ParsedFile::error)
+    size_t protoCopies_ = 0;  // nodes copied by PROTO instances so far
+    size_t protoCopyLimit_ = 0;
     int depth_ = 0;
     size_t nextProgress_ = 0;
 };

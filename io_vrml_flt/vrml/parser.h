@@ -27,7 +27,7 @@ struct ParsedFile {
     std::vector<NodePtr> roots;
     std::vector<UseSite> rootUseSites;  // the roots written as USE
     ProtoTable protos;  // top-level PROTO declarations (used to resolve EXTERNPROTO)
-    std::string error;  // fatal: not a VRML file
+    std::string error;  // fatal: not a VRML file, or PROTO copies beyond their limit
 };
 
 // Given an EXTERNPROTO url (relative to the current file) and a proto name, returns its
@@ -37,6 +37,11 @@ using ExternProtoResolver = std::function<std::shared_ptr<ProtoDecl>(const std::
 
 struct ParseOptions {
     int maxDepth = 400;
+    // PROTO instances are copies, and a PROTO whose body instantiates another multiplies
+    // them: nodes copied in all may not exceed the larger of these (a node with its fields
+    // takes ~300 bytes). Exceeding it is a fatal error naming the instance.
+    size_t maxProtoCopies = 1'000'000;
+    double maxProtoCopiesPerInputByte = 8;
     ExternProtoResolver externProto;
     std::function<void(size_t done, size_t total)> progress;
 };

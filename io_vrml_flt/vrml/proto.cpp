@@ -1,6 +1,7 @@
 #include "vrml/proto.h"
 
 #include <unordered_map>
+#include <unordered_set>
 
 namespace cadlod::vrml {
 namespace {
@@ -49,7 +50,36 @@ private:
     std::unordered_map<const Node*, NodePtr> copies_;
 };
 
+size_t countDistinctNodes(const Node& root)
+{
+    std::unordered_set<const Node*> seen{&root};
+    std::vector<const Node*> pending{&root};
+    const auto visit = [&](const NodePtr& n) {
+        if (n && seen.insert(n.get()).second) pending.push_back(n.get());
+    };
+    while (!pending.empty()) {
+        const Node* n = pending.back();
+        pending.pop_back();
+        for (const Field& f : n->fields)
+            if (f.value.kind == FieldValue::Kind::Nodes)
+                for (const NodePtr& c : f.value.nodes) visit(c);
+        for (const NodePtr& c : n->children) visit(c);
+    }
+    return seen.size();
+}
+
 }  // namespace
+
+size_t instanceNodeCount(ProtoDecl& proto)
+{
+    if (proto.instanceNodes == 0)
+        for (const NodePtr& n : proto.body)
+            if (n) {
+                proto.instanceNodes = countDistinctNodes(*n);
+                break;
+            }
+    return proto.instanceNodes;
+}
 
 NodePtr instantiateProto(const ProtoDecl& proto, const Node& instance)
 {

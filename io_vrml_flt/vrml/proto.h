@@ -6,6 +6,7 @@
 
 #include "vrml/node.h"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,13 @@ struct ProtoDecl {
     std::vector<std::string> urls;           // EXTERNPROTO only
     std::shared_ptr<ProtoDecl> resolved;      // EXTERNPROTO: the fetched PROTO
     bool resolveAttempted = false;
+    size_t instanceNodes = 0;  // cached instanceNodeCount(); 0 until computed
 };
+
+// How many nodes one instance copies: the distinct nodes of the body's first node, not
+// counting the instance's own node values, which are shared. Nested PROTO instances in a
+// body are already copies, so this grows with every level of nesting.
+size_t instanceNodeCount(ProtoDecl& proto);
 
 // `instance` holds the fields given at the use site. Returns null when the body is empty.
 NodePtr instantiateProto(const ProtoDecl& proto, const Node& instance);

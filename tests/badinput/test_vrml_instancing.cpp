@@ -3,6 +3,7 @@
 // expands it and stops with an error naming the USE that crosses the limit; legitimate
 // assemblies with many instances still import in full.
 #include "vrml/importer.h"
+#include "vrml/parser.h"
 
 #include <gtest/gtest.h>
 
@@ -33,6 +34,18 @@ std::string nestedUseBomb(const std::string& header, const std::string& leaf, co
 std::string vrml97Bomb(int levels)
 {
     return nestedUseBomb("#VRML V2.0 utf8\n", "Shape { geometry Box {} }", "Group { children [", "] }", levels);
+}
+
+// `PROTO P0 { Shape }` then `PROTO Pi { Group { Pi-1 {} x10 } }`, and one instance of the last.
+std::string nestedProtoBomb(int levels)
+{
+    std::string text = "#VRML V2.0 utf8\nPROTO P0 [] { Shape { geometry Box {} } }\n";
+    for (int i = 1; i <= levels; ++i) {
+        text += "PROTO P" + std::to_string(i) + " [] { Group { children [ ";
+        for (int k = 0; k < 10; ++k) text += "P" + std::to_string(i - 1) + " {} ";
+        text += "] } }\n";
+    }
+    return text + "P" + std::to_string(levels) + " {}\n";
 }
 
 // A fan of `n` triangles around point 0.
@@ -142,4 +155,41 @@ TEST(UseInstancing, InlinedGeometryCountsTowardsTheLimit)
     EXPECT_EQ(lastShapeOver.error,
               (dir / "asm.wrl").string() + ":4:1: Shape would make the scene exceed 119 triangles (triangle limit)");
     fs::remove_all(dir);
+}
+
+// PROTO instances are copied at parse time, so nested PROTOs multiply nodes before any
+// USE budget could see them: the parser bounds the nodes copied in all.
+TEST(ProtoInstancing, NestedProtoBombStopsAtTheInstanceThatCrossesTheCopyLimit)
+{
+    // Bodies copy 2, 21 and 211 nodes: 20 + 210 + 2110 are copied before the P3 instance.
+    const std::string text = nestedProtoBomb(3);
+    ParseOptions options;
+    options.maxProtoCopies = 2340 + 2111;
+    options.maxProtoCopiesPerInputByte = 0;
+    Diagnostics diag;
+    EXPECT_EQ(parseVrml(text, "p.wrl", diag, options).error, "");
+    options.maxProtoCopies -= 1;
+    const ParsedFile over = parseVrml(text, "p.wrl", diag, options);
+    EXPECT_EQ(over.error,
+              "p.wrl:6:1: PROTO P3 instance would make the PROTO copies exceed 4450 nodes (instancing limit)");
+}
+
+TEST(ProtoInstancing, CopyLimitGrowsWithTheInputSize)
+{
+    const std::string text = nestedProtoBomb(3);  // 4451 nodes copied
+    ParseOptions options;
+    options.maxProtoCopies = 10;
+    options.maxProtoCopiesPerInputByte = 4451.0 / double(text.size());
+    Diagnostics diag;
+    EXPECT_EQ(parseVrml(text, "p.wrl", diag, options).error, "");
+    options.maxProtoCopiesPerInputByte = 4450.0 / double(text.size());
+    EXPECT_NE(parseVrml(text, "p.wrl", diag, options).error, "");
+}
+
+TEST(ProtoInstancing, SevenLevelProtoBombFailsWithTheDefaultLimit)
+{
+    const ImportResult r = importVrmlText(nestedProtoBomb(7), "proto.wrl");
+    EXPECT_EQ(r.error, "proto.wrl:8:52: PROTO P5 instance would make the PROTO copies exceed 1000000 nodes "
+                       "(instancing limit)");
+    EXPECT_TRUE(r.scene.parts.empty());
 }
