@@ -167,11 +167,13 @@ uint64_t ownTriangles(const Node& n, bool vrml1)
     return 0;
 }
 
-std::string describe(const Ref& ref)
+std::string exceedsError(const Ref& ref, uint64_t limit)
 {
     const Node& n = *ref.node;
-    if (ref.useWhere) return *ref.useWhere + ": USE " + n.defName;
-    return n.where + ": " + n.type + (n.defName.empty() ? "" : " " + n.defName);
+    const std::string what = ref.useWhere ? *ref.useWhere + ": USE " + n.defName
+                                          : n.where + ": " + n.type + (n.defName.empty() ? "" : " " + n.defName);
+    return what + " would make the scene exceed " + std::to_string(limit) + " triangles" +
+           (ref.useWhere ? " (instancing limit)" : " (triangle limit)");
 }
 
 }  // namespace
@@ -228,7 +230,6 @@ std::string InstancingBudget::check(const std::vector<NodePtr>& nodes, const std
 {
     std::vector<Ref> refs;
     appendRefs(nodes, useSites, refs);
-    const std::string exceeds = " would make the scene exceed " + std::to_string(limit) + " triangles";
     // Follow the reference that crosses the limit down to a USE (the expansion to blame)
     // or to a node that emits the triangles itself.
     std::optional<Ref> parent;
@@ -243,11 +244,10 @@ std::string InstancingBudget::check(const std::vector<NodePtr>& nodes, const std
             crossing = &r;
             break;
         }
-        if (!crossing) return parent ? describe(*parent) + exceeds + " (triangle limit)" : std::string();
-        if (crossing->useWhere) return describe(*crossing) + exceeds + " (instancing limit)";
-        std::vector<Ref> below = children(*crossing->node, vrml1);
-        if (ownTriangles(*crossing->node, vrml1) > 0 || below.empty())
-            return describe(*crossing) + exceeds + " (triangle limit)";
+        if (!crossing) return parent ? exceedsError(*parent, limit) : std::string();
+        std::vector<Ref> below = crossing->useWhere ? std::vector<Ref>{} : children(*crossing->node, vrml1);
+        if (crossing->useWhere || below.empty() || ownTriangles(*crossing->node, vrml1) > 0)
+            return exceedsError(*crossing, limit);
         parent = *crossing;
         refs = std::move(below);
     }

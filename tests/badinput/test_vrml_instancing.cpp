@@ -75,6 +75,7 @@ TEST(UseInstancing, SevenLevelBombStopsAtTheUseThatCrossesTheDefaultLimit)
     const ImportResult r = importVrmlText(text, "bomb.wrl");
     EXPECT_EQ(r.error, "bomb.wrl:9:48: USE L6 would make the scene exceed 50000000 triangles (instancing limit)");
     EXPECT_TRUE(r.scene.parts.empty());
+    EXPECT_EQ(r.scene.stats.shapes, 0u);  // refused before anything was expanded
 }
 
 TEST(UseInstancing, TopLevelUsesAreCountedToo)
@@ -90,6 +91,7 @@ TEST(UseInstancing, Vrml1SeparatorBombStopsAtTheUse)
     const std::string text = nestedUseBomb("#VRML V1.0 ascii\n", "Separator { Cube {} }", "Separator {", "}", 7);
     const ImportResult r = importVrmlText(text, "bomb1.wrl");
     EXPECT_EQ(r.error, "bomb1.wrl:9:41: USE L6 would make the scene exceed 50000000 triangles (instancing limit)");
+    EXPECT_EQ(r.scene.stats.shapes, 0u);
 }
 
 TEST(UseInstancing, ThousandInstancesOfAThousandTrianglePartImportInFull)
