@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -44,6 +45,24 @@ struct SymmetricHausdorff {
     double maxFraction() const { return diagonal > 0 ? max() / diagonal : 0.0; }
     double meanFraction() const { return diagonal > 0 ? mean() / diagonal : 0.0; }
 };
+
+// Bounding box of the live vertices, in double (null when there are none).
+template <class MeshType>
+vcg::Box3d liveVertexBox(const MeshType& m)
+{
+    vcg::Box3d box;
+    for (const auto& v : m.vert)
+        if (!v.IsD())
+            box.Add(vcg::Point3d::Construct(v.cP()));
+    return box;
+}
+
+template <class MeshType>
+double liveDiagonal(const MeshType& m)
+{
+    const vcg::Box3d box = liveVertexBox(m);
+    return box.IsNull() ? 0.0 : box.Diag();
+}
 
 namespace detail {
 
@@ -140,18 +159,24 @@ public:
     using FaceType = typename MeshType::FaceType;
     using Scalar = typename MeshType::ScalarType;
 
-    explicit ClosestFace(MeshType& m)
+    // `queries`: where the points to look up lie (empty: near m); the grid's box holds
+    // them with a 1 % margin, so that lookups take the grid's fast inside path.
+    explicit ClosestFace(MeshType& m, const vcg::Box3d& queries = vcg::Box3d())
     {
         for (auto& f : m.face)
             if (!f.IsD())
                 refs_.push_back({&f});
-        vcg::Box3d box;
+        vcg::Box3d box = queries;
         for (const auto& r : refs_)
             for (int j = 0; j < 3; ++j)
                 box.Add(vcg::Point3d::Construct(r.cP(j)));
-        maxDist_ = Scalar(box.IsNull() ? 1.0 : box.Diag() * 4 + 1);
-        if (!refs_.empty())
-            grid_.Set(refs_.begin(), refs_.end());
+        const double diag = box.IsNull() ? 1.0 : box.Diag();
+        maxDist_ = Scalar(diag * 4 + 1);
+        if (refs_.empty())
+            return;
+        const double margin = 0.01 * diag + 1e-6 * (box.max.Norm() + box.min.Norm()) + 1e-30;
+        box.Offset(margin);
+        grid_.Set(refs_.begin(), refs_.end(), vcg::Box3<Scalar>::Construct(box));
     }
     bool empty() const { return refs_.empty(); }
 
@@ -166,12 +191,29 @@ public:
         vcg::Point3<Scalar> q;
         NoMarks marks;
         TriangleDistance<Scalar> fn;
-        FaceRef<FaceType>* r = grid_.GetClosest(fn, marks, vcg::Point3<Scalar>::Construct(p), maxDist_, d, q);
+        FaceRef<FaceType>* r = grid_.GetClosest(fn, marks, offTheFarEdge(vcg::Point3<Scalar>::Construct(p)), maxDist_, d, q);
         distance = d;
         return r ? r->face : nullptr;
     }
 
+    const vcg::Box3<Scalar>& gridBox() const { return grid_.bbox; }
+
 private:
+    // vcglib's grid turns a point inside its box into a cell index without clamping it,
+    // and float rounding maps a point a few steps below the box's far side one cell past
+    // the end (an assertion; a read out of bounds with NDEBUG). Such a point is moved onto
+    // the side, i.e. outside, by those few float steps.
+    vcg::Point3<Scalar> offTheFarEdge(vcg::Point3<Scalar> p) const
+    {
+        const vcg::Box3<Scalar>& box = grid_.bbox;
+        for (int j = 0; j < 3; ++j) {
+            const Scalar band = 8 * std::numeric_limits<Scalar>::epsilon() * (std::abs(box.max[j]) + std::abs(box.min[j]));
+            if (p[j] < box.max[j] && p[j] >= box.max[j] - band)
+                p[j] = box.max[j];
+        }
+        return p;
+    }
+
     std::vector<FaceRef<FaceType>> refs_;
     vcg::GridStaticPtr<FaceRef<FaceType>, Scalar> grid_;
     Scalar maxDist_ = 1;
@@ -188,7 +230,7 @@ HausdorffStats oneSidedHausdorff(MeshFrom& from, MeshTo& to, std::size_t faceSam
 {
     HausdorffStats s;
     const auto sources = detail::liveFaces(from);
-    detail::ClosestFace<MeshTo> closest(to);
+    detail::ClosestFace<MeshTo> closest(to, liveVertexBox(from));
     if (closest.empty() || sources.empty())
         return s;
 
@@ -240,24 +282,6 @@ HausdorffStats oneSidedHausdorff(MeshFrom& from, MeshTo& to, std::size_t faceSam
     s.mean = s.samples ? sum / double(s.samples) : 0.0;
     s.rms = s.samples ? std::sqrt(sumSquares / double(s.samples)) : 0.0;
     return s;
-}
-
-// Bounding box of the live vertices, in double (null when there are none).
-template <class MeshType>
-vcg::Box3d liveVertexBox(const MeshType& m)
-{
-    vcg::Box3d box;
-    for (const auto& v : m.vert)
-        if (!v.IsD())
-            box.Add(vcg::Point3d::Construct(v.cP()));
-    return box;
-}
-
-template <class MeshType>
-double liveDiagonal(const MeshType& m)
-{
-    const vcg::Box3d box = liveVertexBox(m);
-    return box.IsNull() ? 0.0 : box.Diag();
 }
 
 // Both directions; fractions are of A's bounding-box diagonal.

@@ -1,0 +1,97 @@
+// The closest-face lookup behind every Hausdorff figure (reports, LOD errors, tests):
+// it must agree with a brute-force search everywhere, including points a float step
+// inside the far sides of the search grid's box, which float rounding maps one cell past
+// the end of vcglib's grid (an assertion, or an out-of-bounds read with NDEBUG: found
+// when a simplified mesh stuck out of the original by just the grid's margin).
+#include "core/hausdorff.h"
+#include "test_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <vcg/complex/algorithms/create/platonic.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+using namespace cadlod;
+using cadlod::test::TestMesh;
+
+namespace {
+
+// A sphere around the origin: there a float step at the box's far side is small against
+// the box's size, which is when the division by the cell size rounds up to the end.
+void offsetSphere(TestMesh& m, float scale = 7.3f)
+{
+    vcg::tri::Sphere(m, 2);
+    for (auto& v : m.vert)
+        v.P() = v.P() * scale + vcg::Point3f(0.25f, -0.5f, 0.125f);
+    vcg::tri::UpdateBounding<TestMesh>::Box(m);
+}
+
+double bruteForce(TestMesh& m, const vcg::Point3d& p)
+{
+    double best = std::numeric_limits<double>::max();
+    for (auto& f : m.face)
+        best = std::min(best, vcg::Distance(p, detail::closestOnTriangle(p, vcg::Point3d::Construct(f.cP(0)),
+                                                                         vcg::Point3d::Construct(f.cP(1)),
+                                                                         vcg::Point3d::Construct(f.cP(2)))));
+    return best;
+}
+
+// Points a few float steps inside the far corner and sides of a box, and on them.
+std::vector<vcg::Point3d> pointsAtTheEdgeOf(const vcg::Box3f& box)
+{
+    std::vector<vcg::Point3d> points;
+    for (int steps = 0; steps < 4; ++steps) {
+        vcg::Point3f p = box.max;
+        for (int k = 0; k < steps; ++k)
+            for (int j = 0; j < 3; ++j)
+                p[j] = std::nextafter(p[j], -std::numeric_limits<float>::infinity());
+        points.push_back(vcg::Point3d::Construct(p));
+        points.push_back(vcg::Point3d(p[0], box.Center()[1], box.Center()[2]));
+        points.push_back(vcg::Point3d(box.Center()[0], p[1], box.Center()[2]));
+        points.push_back(vcg::Point3d(box.Center()[0], box.Center()[1], p[2]));
+    }
+    return points;
+}
+
+}  // namespace
+
+TEST(ClosestFace, AgreesWithBruteForceUpToAndBeyondTheGridEdges)
+{
+    for (int i = 0; i < 60; ++i) {  // many sizes: whether the division rounds up depends on them
+        TestMesh m;
+        offsetSphere(m, 1.0f + 0.37f * float(i));
+        detail::ClosestFace<TestMesh> closest(m);
+        // The edges of the grid cadlod builds, and of the one vcglib's own Set() would
+        // build (the faces' box grown by diagonal / face count).
+        std::vector<vcg::Point3d> points = pointsAtTheEdgeOf(closest.gridBox());
+        vcg::Box3f vcgBox = m.bbox;
+        vcgBox.Offset(m.bbox.Diag() / float(m.fn));
+        for (const vcg::Point3d& p : pointsAtTheEdgeOf(vcgBox))
+            points.push_back(p);
+        std::mt19937 rng(7 + i);
+        const vcg::Point3d c = vcg::Point3d::Construct(m.bbox.Center());
+        std::uniform_real_distribution<double> spread(-1.5 * m.bbox.Diag(), 1.5 * m.bbox.Diag());
+        for (int k = 0; k < 20; ++k)
+            points.push_back(c + vcg::Point3d(spread(rng), spread(rng), spread(rng)));
+        for (const vcg::Point3d& p : points) {
+            double d = -1;
+            ASSERT_NE(closest.find(p, d), nullptr);
+            ASSERT_NEAR(d, bruteForce(m, p), 1e-4 * m.bbox.Diag()) << p[0] << " " << p[1] << " " << p[2];
+        }
+    }
+}
+
+TEST(ClosestFace, HausdorffOfAMeshJustLargerThanTheOtherIsItsOffset)
+{
+    TestMesh inner, outer;
+    offsetSphere(inner);
+    offsetSphere(outer);
+    const vcg::Point3f centre = inner.bbox.Center();
+    for (auto& v : outer.vert)
+        v.P() = centre + (v.P() - centre) * 1.001f;
+    const HausdorffStats h = oneSidedHausdorff(outer, inner, 20000);
+    EXPECT_NEAR(h.max, 0.001 * 7.3, 1e-4);
+}
