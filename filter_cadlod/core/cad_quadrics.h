@@ -1,8 +1,9 @@
 // Per-vertex error quadrics for the CAD edge collapse (Garland–Heckbert):
-//  - every face adds its plane, weighted by its area, to its three vertices;
+//  - every face adds its plane, weighted by its area (capped, see kAreaCapOfMean), to its
+//    three vertices;
 //  - every feature edge (boundary, crease, part border) adds, for each face along it, the
 //    plane through the edge perpendicular to that face, weighted by boundaryWeight × the
-//    face's area, so that moving the edge sideways by d costs what moving that face off
+//    face's (capped) area, so that moving the edge sideways by d costs what moving that face off
 //    its plane by d costs. (A weight of |e|² would make the long thin faces CAD exporters
 //    put along features nearly free to slide: holes closed up at 90 % reduction.)
 //  - planarQuadric adds the same edge planes with a tiny weight on all other edges.
@@ -14,6 +15,8 @@
 
 #include <vcg/math/quadric.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace cadlod {
@@ -54,6 +57,7 @@ public:
         zero.SetZero();
         quadric_.assign(m.vert.size(), zero);
         area_.assign(m.vert.size(), 0.0);
+        areaCap_ = kAreaCapOfMean * meanFaceArea(m);
         for (auto& f : m.face)
             if (!f.IsD())
                 addFace(f, w, isFeatureEdge);
@@ -72,6 +76,36 @@ public:
     std::size_t bytes() const { return quadric_.capacity() * sizeof(Quadric) + area_.capacity() * sizeof(double); }
 
 private:
+    // Face weights are areas capped at a quarter of the mean face area: otherwise the big
+    // faces CAD exporters make of flat regions outweigh the small ones next to them, and
+    // the mean squared distance (cost / area) hides a deviation concentrated on the small
+    // ones (shaft 24k at 90 %: Hausdorff 0.019 % -> 0.012 % of the diagonal).
+    static constexpr double kAreaCapOfMean = 0.25;
+
+    template <class MeshType>
+    static double meanFaceArea(MeshType& m)
+    {
+        double total = 0.0;
+        int faces = 0;
+        for (auto& f : m.face) {
+            if (f.IsD())
+                continue;
+            const double a = doubleArea(f);
+            if (a > 0 && std::isfinite(a)) {
+                total += 0.5 * a;
+                ++faces;
+            }
+        }
+        return faces ? total / faces : 0.0;
+    }
+
+    template <class FaceType>
+    static double doubleArea(const FaceType& f)
+    {
+        const vcg::Point3d p0 = vcg::Point3d::Construct(f.cP(0));
+        return ((vcg::Point3d::Construct(f.cP(1)) - p0) ^ (vcg::Point3d::Construct(f.cP(2)) - p0)).Norm();
+    }
+
     template <class FaceType, class IsFeatureEdge>
     void addFace(FaceType& f, const QuadricWeights& w, IsFeatureEdge isFeatureEdge)
     {
@@ -83,7 +117,7 @@ private:
         if (!(doubleArea > 0) || !std::isfinite(doubleArea))
             return;
         n /= doubleArea;
-        const double area = 0.5 * doubleArea;
+        const double area = std::min(0.5 * doubleArea, areaCap_);
         const Quadric q = planeQuadric(n, n * p[0], area);
         for (int j = 0; j < 3; ++j) {
             quadric(f.V(j)) += q;
@@ -112,6 +146,7 @@ private:
     }
 
     const VertexType* base_ = nullptr;
+    double areaCap_ = 0.0;
     std::vector<Quadric> quadric_;
     std::vector<double> area_;
 };
