@@ -15,7 +15,8 @@ void addPlacementParameters(RichParameterList& par)
     par.addParam(RichBool("optimalPlacement", d.optimalPlacement, "Optimal placement",
                           "Also try the quadric optimum (when well conditioned and near the edge)."));
     par.addParam(RichFloat("featureAngle", d.featureAngle, "Feature angle (degrees)",
-                           "Edges whose faces meet at a sharper angle are creases: they keep their vertices."));
+                           "Edges whose faces meet at a sharper angle are creases: they stay sharp, and their "
+                           "vertices only move along them."));
     par.addParam(RichBool("preserveBoundary", d.preserveBoundary, "Preserve boundary",
                           "Boundary edges are features: boundary vertices stay on the boundary polyline."));
     par.addParam(RichFloat("boundaryWeight", d.boundaryWeight, "Boundary/crease weight",
