@@ -56,6 +56,8 @@ public:
     // A NUL-terminated string in a field of `width` bytes (or up to the end).
     std::string string(std::size_t width)
     {
+        if (width == 0)
+            return {};  // an empty record body has no data pointer to read from
         require(pos_, width);
         const char* s = reinterpret_cast<const char*>(data_ + pos_);
         pos_ += width;

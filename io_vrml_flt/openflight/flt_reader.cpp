@@ -331,6 +331,8 @@ private:
     void readLongId(ByteReader& in)
     {
         const std::string name = in.string(in.remaining());
+        if (name.empty())
+            return;  // keeps the record's own 8-character name
         if (last_.kind == Node::Lod)
             model_.levels[std::size_t(last_.level)].name = name;
         else if (last_.kind == Node::Object)

@@ -172,3 +172,33 @@ TEST(BadFlt, VertexPoolCountBeyondItsRecordIsAnError)
     EXPECT_EQ(readError(b), "Local Vertex Pool at offset " + std::to_string(at) +
                                 ": 11184810 vertices announced, the record holds " + std::to_string(written));
 }
+
+// Found by fuzzing: a Long ID record with no body read its name through a null pointer
+// (UBSan). An empty Long ID now leaves the Object's own name.
+TEST(BadFlt, EmptyLongIdKeepsTheObjectName)
+{
+    constexpr std::uint16_t kObject = 4, kLongId = 33;
+    const Bytes plain = written();
+    LodModel before;
+    std::string error;
+    ASSERT_TRUE(readOpenFlight(plain.data(), plain.size(), before, error)) << error;
+    ASSERT_FALSE(before.levels.empty());
+    ASSERT_FALSE(before.levels[0].parts.empty());
+
+    // After the Object and after the Long ID the writer may have put behind it.
+    const std::vector<test::RecordSpan> spans = test::recordSpans(plain);
+    std::size_t k = 0;
+    while (spans[k].opcode != kObject)
+        ++k;
+    if (k + 1 < spans.size() && spans[k + 1].opcode == kLongId)
+        ++k;
+    Bytes b = plain;
+    const Bytes emptyLongId = {0, std::uint8_t(kLongId), 0, 4};
+    b.insert(b.begin() + std::ptrdiff_t(spans[k].offset + spans[k].length), emptyLongId.begin(), emptyLongId.end());
+    LodModel after;
+    ASSERT_TRUE(readOpenFlight(b.data(), b.size(), after, error)) << error;
+    ASSERT_FALSE(after.levels.empty());
+    ASSERT_FALSE(after.levels[0].parts.empty());
+    EXPECT_FALSE(after.levels[0].parts[0].name.empty());
+    EXPECT_EQ(after.levels[0].parts[0].name, before.levels[0].parts[0].name);
+}
