@@ -10,11 +10,13 @@ start)
   rm -f "$dir/display"
   # A display number of our own, away from :0 and spread by PID: with -displayfd a new
   # server takes the lowest free number, often the one a just-stopped server (another test
-  # run's) still cleans up, which can remove the new server's socket.
+  # run's) still cleans up, which can remove the new server's socket. -noreset: by default
+  # the server resets whenever its last client leaves, and a test connecting during the
+  # reset cannot open the display.
   for attempt in $(seq 0 40); do
     n=$(( 100 + ($$ + attempt * 37) % 800 ))
     [ -e "/tmp/.X$n-lock" ] && continue
-    Xvfb ":$n" -screen 0 1280x900x24 -nolisten tcp >"$dir/xvfb.log" 2>&1 &
+    Xvfb ":$n" -screen 0 1280x900x24 -nolisten tcp -noreset >"$dir/xvfb.log" 2>&1 &
     pid=$!
     # Tests start as soon as this returns: wait until the server takes clients.
     for _ in $(seq 1 100); do
