@@ -29,7 +29,7 @@ total=$(tr -cd '\0' < "$list" | wc -c)
 
 # One Xvfb for the whole batch: parallel xvfb-run calls race for display numbers.
 display_file=$(mktemp)
-Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3>"$display_file" >/dev/null 2>&1 &
+Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp -noreset 3>"$display_file" >/dev/null 2>&1 &
 for _ in $(seq 50); do [ -s "$display_file" ] && break; sleep 0.1; done
 export DISPLAY=":$(tr -d '[:space:]' < "$display_file")"; rm -f "$display_file"
 

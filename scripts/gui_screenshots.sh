@@ -15,7 +15,7 @@ WORK="$BUILD/gui-screenshots"
 mkdir -p "$OUT" "$WORK"
 SHAFT="$ROOT/docs/sample/shaft.wrl"
 
-Xvfb -displayfd 3 -screen 0 1280x900x24 -nolisten tcp 3>"$WORK/display" >/dev/null 2>&1 &
+Xvfb -displayfd 3 -screen 0 1280x900x24 -nolisten tcp -noreset 3>"$WORK/display" >/dev/null 2>&1 &
 XVFB=$!
 trap 'pkill -f "$STAGE/bin/meshlab " 2>/dev/null || true; kill $XVFB 2>/dev/null || true' EXIT
 for _ in $(seq 50); do [ -s "$WORK/display" ] && break; sleep 0.1; done
