@@ -3,9 +3,9 @@
 // listed in docs/reliability.md instead of repeated here.
 #include "vrml/importer.h"
 #include "vrml/source_text.h"
+#include "gzip_text.h"
 
 #include <gtest/gtest.h>
-#include <zlib.h>
 
 #include <cmath>
 #include <cstdint>
@@ -57,22 +57,6 @@ bool allPointsFinite(const Scene& s)
     return true;
 }
 
-std::string gzip(const std::string& text)
-{
-    uLongf size = compressBound(uLong(text.size())) + 32;
-    std::string out(size, '\0');
-    z_stream zs{};
-    deflateInit2(&zs, Z_BEST_COMPRESSION, Z_DEFLATED, 15 + 16, 9, Z_DEFAULT_STRATEGY);
-    zs.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
-    zs.avail_in = uInt(text.size());
-    zs.next_out = reinterpret_cast<Bytef*>(out.data());
-    zs.avail_out = uInt(out.size());
-    deflate(&zs, Z_FINISH);
-    out.resize(zs.total_out);
-    deflateEnd(&zs);
-    return out;
-}
-
 }  // namespace
 
 TEST(BadVrml, TruncatedTextKeepsWhatWasReadAndSaysWhere)
@@ -87,7 +71,7 @@ TEST(BadVrml, TruncatedTextKeepsWhatWasReadAndSaysWhere)
 
 TEST(BadVrml, TruncatedGzipIsAnError)
 {
-    std::string gz = gzip(kHeader + "Shape { geometry Box {} }\n" + std::string(5000, '#'));
+    std::string gz = cadlod::test::gzipText(kHeader + "Shape { geometry Box {} }\n" + std::string(5000, '#'));
     gz.resize(gz.size() / 2);
     const ImportResult r = importVrmlText(gz, "cut.wrz");
     const std::string prefix = "cut.wrz: truncated gzip file (stream ends after ";
@@ -248,7 +232,7 @@ TEST(BadVrml, GzipBombIsRefusedAtTheBound)
 {
     ImportOptions options;
     options.maxInflatedBytes = 1 << 20;
-    const std::string bomb = gzip(kHeader + std::string(64 << 20, ' '));
+    const std::string bomb = cadlod::test::gzipText(kHeader + std::string(64 << 20, ' '));
     ASSERT_LT(bomb.size(), 128u * 1024u);
     const ImportResult r = importVrmlText(bomb, "bomb.wrz", options);
     EXPECT_EQ(r.error, "bomb.wrz: gzip data inflates beyond 1 MB; refusing (gzip bomb?)");
@@ -258,7 +242,7 @@ TEST(BadVrml, GzipBombIsRefusedAtTheBound)
 // size, not at the absolute 8 GiB: memory follows the file size.
 TEST(BadVrml, GzipBombIsRefusedAtItsRatioWithTheDefaultBound)
 {
-    const std::string bomb = gzip(kHeader + std::string(80 << 20, ' '));
+    const std::string bomb = cadlod::test::gzipText(kHeader + std::string(80 << 20, ' '));
     const std::size_t bound = bomb.size() * kMaxInflationRatio;
     ASSERT_GT(bound, kInflationFloorBytes);  // the ratio binds, not the floor
     const ImportResult r = importVrmlText(bomb, "bomb.wrz");
@@ -269,7 +253,7 @@ TEST(BadVrml, GzipBombIsRefusedAtItsRatioWithTheDefaultBound)
 
 TEST(BadVrml, SmallGzipBombIsRefusedAtTheFloor)
 {
-    const std::string bomb = gzip(kHeader + std::string(20 << 20, ' '));
+    const std::string bomb = cadlod::test::gzipText(kHeader + std::string(20 << 20, ' '));
     ASSERT_LT(bomb.size() * kMaxInflationRatio, kInflationFloorBytes);
     const ImportResult r = importVrmlText(bomb, "small.wrz");
     EXPECT_EQ(r.error, "small.wrz: gzip data inflates beyond 16 MB from " + std::to_string(bomb.size()) +

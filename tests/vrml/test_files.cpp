@@ -1,9 +1,9 @@
 // File-level behaviour: gzip by magic bytes, gzip bombs and truncation, Inline
 // resolution, recursion guard, missing files, EXTERNPROTO.
+#include "gzip_text.h"
 #include "vrml_test_util.h"
 
 #include <gtest/gtest.h>
-#include <zlib.h>
 
 #include <filesystem>
 #include <fstream>
@@ -15,21 +15,6 @@ using namespace cadlod::vrml::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string gzipBytes(const std::string& text)
-{
-    z_stream zs{};
-    deflateInit2(&zs, Z_BEST_SPEED, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY);
-    std::string out(deflateBound(&zs, uLong(text.size())) + 32, '\0');
-    zs.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
-    zs.avail_in = uInt(text.size());
-    zs.next_out = reinterpret_cast<Bytef*>(out.data());
-    zs.avail_out = uInt(out.size());
-    deflate(&zs, Z_FINISH);
-    out.resize(zs.total_out);
-    deflateEnd(&zs);
-    return out;
-}
 
 fs::path tempDir(const std::string& name)
 {
@@ -50,13 +35,13 @@ const std::string kBox = "#VRML V2.0 utf8\nShape { geometry Box {} }\n";
 
 TEST(VrmlFiles, GzipIsRecognisedByMagicBytesWhateverTheName)
 {
-    const Scene s = load(gzipBytes(kBox), {}, "plain-name.wrl");
+    const Scene s = load(cadlod::test::gzipText(kBox), {}, "plain-name.wrl");
     EXPECT_EQ(s.triangleCount(), 12u);
 }
 
 TEST(VrmlFiles, TruncatedGzipFailsClearly)
 {
-    std::string gz = gzipBytes(kBox + std::string(5000, '#'));
+    std::string gz = cadlod::test::gzipText(kBox + std::string(5000, '#'));
     gz.resize(gz.size() / 2);
     const ImportResult r = importVrmlText(gz, "cut.wrz");
     EXPECT_FALSE(r.ok());
@@ -68,7 +53,7 @@ TEST(VrmlFiles, GzipBombIsRefused)
 {
     ImportOptions small;
     small.maxInflatedBytes = 1 << 20;
-    const ImportResult r = importVrmlText(gzipBytes(kBox + std::string(4 << 20, ' ')), "bomb.wrl", small);
+    const ImportResult r = importVrmlText(cadlod::test::gzipText(kBox + std::string(4 << 20, ' ')), "bomb.wrl", small);
     EXPECT_FALSE(r.ok());
     EXPECT_NE(r.error.find("gzip bomb"), std::string::npos) << r.error;
 }
@@ -87,7 +72,7 @@ TEST(VrmlFiles, InlinesResolveRelativeToTheIncludingFileAndApplyTheTransform)
                            "Inline { url [ \"missing.wrl\" ] }\n");
     write(dir / "parts/wheel.wrl", "#VRML V2.0 utf8\nInline { url \"sub/hub.wrl.gz\" }\n");
     std::ofstream(dir / "parts/sub/hub.wrl.gz", std::ios::binary) << "";
-    write(dir / "parts/sub/hub.wrl.gz", gzipBytes("#VRML V1.0 ascii\nCube {}\n"));  // VRML 1.0 inside VRML97
+    write(dir / "parts/sub/hub.wrl.gz", cadlod::test::gzipText("#VRML V1.0 ascii\nCube {}\n"));  // VRML 1.0 inside VRML97
     const ImportResult r = importVrmlFile((dir / "asm.wrl").string());
     ASSERT_TRUE(r.ok()) << r.error;
     EXPECT_EQ(r.scene.triangleCount(), 12u);
