@@ -318,7 +318,6 @@ private:
 
     PlacementScore score(const Context& ctx, const vcg::Point3d& p, double& worstBefore) const
     {
-        constexpr double twoSqrt3 = 3.4641016151377544;
         PlacementScore s;
         double sum = 0.0, worst = 1.0;
         for (const RingFace& f : ctx.ring) {
@@ -337,9 +336,7 @@ private:
                 }
             }
             const double edges = ua.SquaredNorm() + ub.SquaredNorm() + f.abSquared;
-            const double c = (edges > 0 && std::isfinite(edges) && std::isfinite(doubleArea))
-                                 ? std::min(1.0, twoSqrt3 * doubleArea / edges)
-                                 : 0.0;
+            const double c = compactnessFrom(doubleArea, edges);
             sum += c;
             worst = std::min(worst, c);
         }

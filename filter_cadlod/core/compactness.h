@@ -11,6 +11,17 @@
 
 namespace cadlod {
 
+// From twice the area and the sum of the squared edge lengths (the simplifier has both
+// at hand when it scores a placement).
+inline double compactnessFrom(double doubleArea, double sumSquaredEdges)
+{
+    if (!(sumSquaredEdges > 0.0) || !std::isfinite(sumSquaredEdges) || !std::isfinite(doubleArea))
+        return 0.0;
+    // 4*sqrt(3)*A = 2*sqrt(3)*(2A)
+    const double c01 = 2.0 * std::sqrt(3.0) * doubleArea / sumSquaredEdges;
+    return std::min(1.0, c01);  // rounding can push an equilateral a hair above 1
+}
+
 // Works on any point type with operator[] (vcg::Point3f/d, std::array, ...).
 // Computed in double whatever the input precision, so float meshes do not lose
 // the small areas that tell slivers apart.
@@ -23,12 +34,7 @@ double compactness(const Point& a, const Point& b, const Point& c)
     const double sumSquaredEdges = ux * ux + uy * uy + uz * uz + vx * vx + vy * vy + vz * vz
                                  + wx * wx + wy * wy + wz * wz;
     const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
-    const double doubleArea = std::sqrt(cx * cx + cy * cy + cz * cz);
-    if (!(sumSquaredEdges > 0.0) || !std::isfinite(sumSquaredEdges) || !std::isfinite(doubleArea))
-        return 0.0;
-    // 4*sqrt(3)*A = 2*sqrt(3)*(2A)
-    const double c01 = 2.0 * std::sqrt(3.0) * doubleArea / sumSquaredEdges;
-    return std::min(1.0, c01);  // rounding can push an equilateral a hair above 1
+    return compactnessFrom(std::sqrt(cx * cx + cy * cy + cz * cz), sumSquaredEdges);
 }
 
 struct CompactnessStats {
