@@ -63,9 +63,10 @@ bool repeatsVertex(const FaceType& f)
 }
 
 // Marks feature edges with bits.edge[j] on every face sharing them, non-moving
-// vertices with bits.locked and the vertices of kept boundary edges with bits.boundary. `partOf(face)` returns the face's part id (faces of
-// different parts meeting at an edge make a part border); pass a function returning a
-// constant to ignore parts. Needs VF adjacency.
+// vertices with bits.locked and the vertices of kept boundary edges with bits.boundary
+// (the caller clears the vertex bits beforehand, as simplify() does). `partOf(face)`
+// returns the face's part id (faces of different parts meeting at an edge make a part
+// border); pass a function returning a constant to ignore parts. Needs VF adjacency.
 template <class MeshType, class PartOf>
 FeatureEdgeCounts markFeatureEdges(MeshType& m, const FeatureBits& bits, double featureAngleDeg,
                                    bool boundaryIsFeature, PartOf partOf)
@@ -78,10 +79,8 @@ FeatureEdgeCounts markFeatureEdges(MeshType& m, const FeatureBits& bits, double 
     for (FaceType& f : m.face) {
         if (f.IsD())
             continue;
-        for (int j = 0; j < 3; ++j) {
+        for (int j = 0; j < 3; ++j)
             f.ClearUserBit(bits.edge[j]);
-            f.V(j)->ClearUserBit(bits.boundary);
-        }
         if (repeatsVertex(f)) {
             ++counts.degenerateFaces;
             for (int j = 0; j < 3; ++j)
