@@ -268,6 +268,7 @@ void applyPictureMaterial(osg::Node& root)
 osg::ref_ptr<osgViewer::Viewer> makeViewer(const Options& o, osg::Node* scene)
 {
     osg::ref_ptr<osg::GraphicsContext::Traits> t = new osg::GraphicsContext::Traits;
+    t->readDISPLAY();  // a bare Traits means display :0.0, whatever DISPLAY says
     t->x = 0;
     t->y = 0;
     t->width = o.width;
