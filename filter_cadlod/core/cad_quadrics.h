@@ -90,20 +90,13 @@ private:
         for (auto& f : m.face) {
             if (f.IsD())
                 continue;
-            const double a = doubleArea(f);
+            const double a = detail::faceNormal(f).Norm();  // twice the area
             if (a > 0 && std::isfinite(a)) {
                 total += 0.5 * a;
                 ++faces;
             }
         }
         return faces ? total / faces : 0.0;
-    }
-
-    template <class FaceType>
-    static double doubleArea(const FaceType& f)
-    {
-        const vcg::Point3d p0 = vcg::Point3d::Construct(f.cP(0));
-        return ((vcg::Point3d::Construct(f.cP(1)) - p0) ^ (vcg::Point3d::Construct(f.cP(2)) - p0)).Norm();
     }
 
     template <class FaceType, class IsFeatureEdge>
