@@ -14,6 +14,13 @@
 // error reductions for shape: on the bench shaft at 90 % that cost Hausdorff (0.027 %
 // vs 0.019 % of the diagonal) and gained no compactness.
 //
+// Evaluation is lazy: an edge enters the heap with a cheap lower bound of its priority
+// (the quadric cost of its cheapest candidate, no look at the faces around it) and is
+// evaluated in full only when it reaches the top. If its real priority is then above the
+// next entry's, it goes back into the heap with that value. Most entries go stale before
+// they reach the top, so most full evaluations (O(valence) per candidate) are never done:
+// around a 1024-valent fan centre every collapse pushes ~2000 edges.
+//
 // vcglib pitfalls handled here: the base constructor would call the base ComputePriority,
 // so this class sets its own fields; ComputePosition is not virtual in vcglib, so the
 // position is computed and stored by ComputePriority; all per-run state lives in the
@@ -51,7 +58,6 @@ struct PlacementScore {
     bool valid = false;
     bool flipped = false;
     double meanCompactness = 0.0;
-    double minCompactness = 0.0;
 };
 
 template <class MeshType>
@@ -68,8 +74,8 @@ struct CollapseContext : public vcg::BaseParameterClass {
     double maxErrorAbs = 0.0;     // 0: unbounded
     double cosNormalLimit = -1.0;
     double largestError = 0.0;    // over executed collapses
+    typename vcg::LocalOptimization<MeshType>::HeapType* heap = nullptr;  // for re-queued entries
     std::vector<RingFace> ring;   // scratch of the edge being evaluated
-    std::vector<const typename MeshType::FaceType*> ringFaces;  // every face around the edge
     std::vector<vcg::Point3f> inputNormal;  // per face index: unit normal in the input
     const typename MeshType::FaceType* faceBase = nullptr;
 
@@ -133,7 +139,7 @@ public:
     {
         this->localMark = mark;
         this->pos = p;
-        this->_priority = ComputePriority(pp);
+        this->_priority = lowerBound(*static_cast<Context*>(pp));
     }
 
     ScalarType ComputePriority(vcg::BaseParameterClass* pp) override
@@ -144,9 +150,16 @@ public:
 
     bool IsFeasible(vcg::BaseParameterClass* pp) override
     {
+        Context& ctx = *static_cast<Context*>(pp);
+        if (!evaluated_) {
+            evaluate(ctx);
+            if (feasible_ && ctx.heap && !ctx.heap->empty() && this->_priority > ctx.heap->front().pri) {
+                requeue(*ctx.heap);
+                return false;
+            }
+        }
         if (!feasible_)
             return false;
-        Context& ctx = *static_cast<Context*>(pp);
         if (ctx.params.preserveTopology &&
             !vcg::tri::EdgeCollapser<MeshType, VertexPair>::LinkConditions(this->pos)) {
             ++ctx.stats->rejectedTopology;
@@ -238,6 +251,13 @@ public:
     float error() const { return error_; }
 
 private:
+    // The heap owns and deletes the popped entry: a copy, now evaluated, goes back in.
+    void requeue(HeapType& heap) const
+    {
+        heap.push_back(HeapElem(new CadEdgeCollapse(*this)));
+        std::push_heap(heap.begin(), heap.end());
+    }
+
     static void push(HeapType& heap, VertexType* a, VertexType* b, vcg::BaseParameterClass* pp)
     {
         heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(a, b), Base::GlobalMark(), pp)));
@@ -263,17 +283,17 @@ private:
         this->_priority = std::numeric_limits<ScalarType>::max();
     }
 
-    // What the faces around the edge say: surviving faces into ctx.ring, all faces into
-    // ctx.ringFaces, whether the endpoints and the edge lie on features.
+    // What the faces around the edge say: surviving faces into ctx.ring, whether the
+    // endpoints and the edge lie on features, the worst compactness of all of them.
     struct Neighbourhood {
         bool v0OnFeature = false, v1OnFeature = false, edgeIsFeature = false;
+        double worstCompactness = 1.0;
     };
 
     Neighbourhood gatherRing(Context& ctx, VertexType* v0, VertexType* v1)
     {
         Neighbourhood n;
         ctx.ring.clear();
-        ctx.ringFaces.clear();
         for (int side = 0; side < 2; ++side) {
             VertexType* v = side == 0 ? v0 : v1;
             VertexType* other = side == 0 ? v1 : v0;
@@ -288,38 +308,32 @@ private:
                 onFeature |= featureA || featureB;
                 if (a == other || b == other) {
                     n.edgeIsFeature |= a == other ? featureA : featureB;
-                    if (side == 1)
-                        continue;  // shared faces were seen from v0
+                    if (side == 0)  // shared faces are seen from both sides
+                        n.worstCompactness = std::min(n.worstCompactness, compactness(f->cP(0), f->cP(1), f->cP(2)));
                 } else {
                     const vcg::Point3d pa = vcg::Point3d::Construct(a->cP());
                     const vcg::Point3d pb = vcg::Point3d::Construct(b->cP());
                     const vcg::Point3d pv = vcg::Point3d::Construct(v->cP());
                     const vcg::Point3d normal = (pa - pv) ^ (pb - pv);
-                    ctx.ring.push_back({pa, pb, normal, normal.Norm(),
+                    const RingFace face{pa, pb, normal, normal.Norm(),
                                         vcg::Point3d::Construct(ctx.inputNormal[f - ctx.faceBase]),
-                                        (pb - pa).SquaredNorm()});
+                                        (pb - pa).SquaredNorm()};
+                    const double edges = (pa - pv).SquaredNorm() + (pb - pv).SquaredNorm() + face.abSquared;
+                    n.worstCompactness = std::min(n.worstCompactness, compactnessFrom(face.normalLength, edges));
+                    ctx.ring.push_back(face);
                 }
-                ctx.ringFaces.push_back(f);
             }
             (side == 0 ? n.v0OnFeature : n.v1OnFeature) = onFeature;
         }
         return n;
     }
 
-    // Worst compactness around the edge now; only needed when a candidate would create a
-    // face below minCompactness, so computed on demand.
-    static double worstCompactnessNow(const Context& ctx)
-    {
-        double worst = 1.0;
-        for (const FaceType* f : ctx.ringFaces)
-            worst = std::min(worst, compactness(f->cP(0), f->cP(1), f->cP(2)));
-        return worst;
-    }
-
-    PlacementScore score(const Context& ctx, const vcg::Point3d& p, double& worstBefore) const
+    // Mean compactness of the faces around the new vertex at p; invalid if one of them would
+    // fall below `floor`, flipped if one turns too far.
+    PlacementScore score(const Context& ctx, const vcg::Point3d& p, double floor) const
     {
         PlacementScore s;
-        double sum = 0.0, worst = 1.0;
+        double sum = 0.0;
         for (const RingFace& f : ctx.ring) {
             const vcg::Point3d ua = f.a - p, ub = f.b - p;
             const vcg::Point3d n = ua ^ ub;
@@ -337,19 +351,75 @@ private:
             }
             const double edges = ua.SquaredNorm() + ub.SquaredNorm() + f.abSquared;
             const double c = compactnessFrom(doubleArea, edges);
+            if (c < floor)
+                return s;
             sum += c;
-            worst = std::min(worst, c);
         }
         s.meanCompactness = sum / double(ctx.ring.size());
-        s.minCompactness = worst;
-        if (worst < ctx.params.minCompactness && worstBefore < 0)
-            worstBefore = worstCompactnessNow(ctx);
-        s.valid = !(worst < ctx.params.minCompactness && worst < worstBefore);
+        s.valid = true;
         return s;
+    }
+
+    struct Candidate {
+        vcg::Point3d p;
+        double cost;
+        bool onlyIfFlat;  // allowed only if it costs no more than the flat floor
+    };
+    static constexpr int kMaxCandidates = 32;
+
+    // Both endpoints, evenly spaced interior points and the quadric optimum (if well
+    // conditioned and near the edge), with their costs. A fixed endpoint keeps its place.
+    static int candidates(const Context& ctx, const Quadric& q, const vcg::Point3d& p0, const vcg::Point3d& p1,
+                          bool v0Fixed, bool v1Fixed, Candidate* cand)
+    {
+        int count = 0;
+        const int interior = std::clamp(ctx.params.candidatesPerEdge, 0, kMaxCandidates - 4);
+        const bool between = v0Fixed || v1Fixed;
+        cand[count++] = {p0, 0.0, v1Fixed && !v0Fixed};
+        cand[count++] = {p1, 0.0, v0Fixed && !v1Fixed};
+        for (int i = 1; i <= interior; ++i)
+            cand[count++] = {p0 + (p1 - p0) * (double(i) / (interior + 1)), 0.0, between};
+        vcg::Point3d optimum(0, 0, 0);
+        if (ctx.params.optimalPlacement && quadricMinimum(q, optimum) &&
+            vcg::Distance(optimum, (p0 + p1) * 0.5) <= vcg::Distance(p0, p1))
+            cand[count++] = {optimum, 0.0, between};
+        for (int i = 0; i < count; ++i)
+            cand[i].cost = applyQuadric(q, cand[i].p);
+        return count;
+    }
+
+    // Priority of a collapse: the mean squared distance to the merged planes, plus the flat
+    // floor that keeps free collapses ordered (smallest merged area, best shape first)
+    // instead of tied at ~0. `shape` in (0, 1]: 1 for well-shaped results.
+    static ScalarType priorityOf(const Context& ctx, double cost, double area, double shape)
+    {
+        const double diag2 = ctx.diagonal * ctx.diagonal;
+        const double meanSquaredDistance = area > 0 ? cost / area : cost / diag2;
+        return ScalarType((meanSquaredDistance + ctx.flatError2 * area / (diag2 * shape)) / diag2);
+    }
+
+    // Never above the priority evaluate() finds: the cheapest of all candidates (evaluate
+    // may refuse some, never adds any) and the best shape.
+    ScalarType lowerBound(const Context& ctx)
+    {
+        VertexType* v0 = this->pos.V(0);
+        VertexType* v1 = this->pos.V(1);
+        if (v0->IsUserBit(ctx.bits.locked) || v1->IsUserBit(ctx.bits.locked))
+            return std::numeric_limits<ScalarType>::max();
+        Quadric q = ctx.quadrics.quadric(v0);
+        q += ctx.quadrics.quadric(v1);
+        Candidate cand[kMaxCandidates];
+        const int count = candidates(ctx, q, vcg::Point3d::Construct(v0->cP()), vcg::Point3d::Construct(v1->cP()),
+                                     false, false, cand);
+        double minCost = std::numeric_limits<double>::max();
+        for (int i = 0; i < count; ++i)
+            minCost = std::min(minCost, cand[i].cost);
+        return priorityOf(ctx, minCost, ctx.quadrics.area(v0) + ctx.quadrics.area(v1), 1.0);
     }
 
     void evaluate(Context& ctx)
     {
+        evaluated_ = true;
         feasible_ = true;
         VertexType* v0 = this->pos.V(0);
         VertexType* v1 = this->pos.V(1);
@@ -365,13 +435,6 @@ private:
         Quadric q = ctx.quadrics.quadric(v0);
         q += ctx.quadrics.quadric(v1);
         const double area = ctx.quadrics.area(v0) + ctx.quadrics.area(v1);
-        const vcg::Point3d p0 = vcg::Point3d::Construct(v0->cP());
-        const vcg::Point3d p1 = vcg::Point3d::Construct(v1->cP());
-
-        struct Candidate { vcg::Point3d p; double cost; bool onlyIfFlat; };
-        Candidate cand[32];
-        int count = 0;
-        const int interior = std::clamp(ctx.params.candidatesPerEdge, 0, 28);
         // A vertex on a boundary keeps its place (or takes the other boundary vertex's), and
         // so does a crease vertex when the edge leaves the crease: other candidates must cost
         // no more than the flat floor, i.e. lie on the feature already. Along a crease the
@@ -379,20 +442,13 @@ private:
         // hold it on the crease, and it can cut the chord error of a curved crease in half.
         const bool v0Fixed = n.v0OnFeature && (!n.edgeIsFeature || v0->IsUserBit(ctx.bits.boundary));
         const bool v1Fixed = n.v1OnFeature && (!n.edgeIsFeature || v1->IsUserBit(ctx.bits.boundary));
-        const bool between = v0Fixed || v1Fixed;
-        cand[count++] = {p0, 0.0, v1Fixed && !v0Fixed};
-        cand[count++] = {p1, 0.0, v0Fixed && !v1Fixed};
-        for (int i = 1; i <= interior; ++i)
-            cand[count++] = {p0 + (p1 - p0) * (double(i) / (interior + 1)), 0.0, between};
-        vcg::Point3d optimum(0, 0, 0);
-        if (ctx.params.optimalPlacement && quadricMinimum(q, optimum) &&
-            vcg::Distance(optimum, (p0 + p1) * 0.5) <= vcg::Distance(p0, p1))
-            cand[count++] = {optimum, 0.0, between};
+        Candidate cand[kMaxCandidates];
+        int count = candidates(ctx, q, vcg::Point3d::Construct(v0->cP()), vcg::Point3d::Construct(v1->cP()),
+                               v0Fixed, v1Fixed, cand);
         const double flatFloor = area * ctx.flatError2;
         double minCost = std::numeric_limits<double>::max();
         int kept = 0;
         for (int i = 0; i < count; ++i) {
-            cand[i].cost = applyQuadric(q, cand[i].p);
             if (cand[i].onlyIfFlat && cand[i].cost > flatFloor)
                 continue;
             cand[kept++] = cand[i];
@@ -401,14 +457,15 @@ private:
         count = kept;
         const double tieLimit = minCost * (1.0 + ctx.params.tieTolerance) + flatFloor;
 
+        // No new face below minCompactness, unless it is still better than the worst now.
+        const double floor = std::min(ctx.params.minCompactness, n.worstCompactness);
         int best = -1;
         PlacementScore bestScore;
-        double worstBefore = -1.0;  // not computed yet
         bool anyFlip = false;
         for (int i = 0; i < count; ++i) {
             if (cand[i].cost > tieLimit)
                 continue;
-            const PlacementScore s = score(ctx, cand[i].p, worstBefore);
+            const PlacementScore s = score(ctx, cand[i].p, floor);
             anyFlip |= s.flipped;
             if (s.valid && (best < 0 || s.meanCompactness > bestScore.meanCompactness ||
                             (s.meanCompactness == bestScore.meanCompactness && cand[i].cost < cand[best].cost))) {
@@ -420,7 +477,7 @@ private:
             for (int i = 0; i < count; ++i) {
                 if (cand[i].cost <= tieLimit || (best >= 0 && cand[i].cost >= cand[best].cost))
                     continue;
-                const PlacementScore s = score(ctx, cand[i].p, worstBefore);
+                const PlacementScore s = score(ctx, cand[i].p, floor);
                 anyFlip |= s.flipped;
                 if (s.valid) {
                     best = i;
@@ -435,18 +492,15 @@ private:
         error_ = float(area > 0 ? std::sqrt(cost / area) : std::sqrt(cost));
         if (ctx.maxErrorAbs > 0 && error_ > ctx.maxErrorAbs)
             return reject(stats.rejectedError);
-        // The flat floor keeps free collapses ordered (smallest merged area, best shape
-        // first) instead of tied at ~0.
         const double qualityThr = ctx.params.qualityThreshold;
         const double shape = qualityThr > 0 ? std::clamp(bestScore.meanCompactness / qualityThr, 0.02, 1.0) : 1.0;
-        const double diag2 = ctx.diagonal * ctx.diagonal;
-        const double meanSquaredDistance = area > 0 ? cost / area : cost / diag2;
-        this->_priority = ScalarType((meanSquaredDistance + ctx.flatError2 * area / (diag2 * shape)) / diag2);
+        this->_priority = priorityOf(ctx, cost, area, shape);
     }
 
     vcg::Point3<ScalarType> target_;
     float error_ = 0.0f;
     bool feasible_ = true;
+    bool evaluated_ = false;
 };
 
 }  // namespace cadlod

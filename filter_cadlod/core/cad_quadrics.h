@@ -65,6 +65,8 @@ public:
 
     Quadric& quadric(const VertexType* v) { return quadric_[v - base_]; }
     double& area(const VertexType* v) { return area_[v - base_]; }
+    const Quadric& quadric(const VertexType* v) const { return quadric_[v - base_]; }
+    double area(const VertexType* v) const { return area_[v - base_]; }
 
     // v1 survives a collapse of v0 into it.
     void merge(const VertexType* v0, const VertexType* v1)

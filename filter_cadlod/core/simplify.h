@@ -79,13 +79,112 @@ bool simplifierRequirementsMet(const MeshType& m)
            vcg::tri::HasPerVertexMark(m);
 }
 
+// Sets up a simplification of `m`: feature and boundary marks, quadrics, input normals,
+// the bit flags they need. False if the mesh has no extent (stats.diagonal 0). Every
+// prepareCollapse needs a releaseCollapse, which frees the bit flags.
+template <class MeshType>
+bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<MeshType>& ctx, SimplifyStats& stats)
+{
+    using FaceType = typename MeshType::FaceType;
+    using VertexType = typename MeshType::VertexType;
+    ctx.params = params;
+    ctx.stats = &stats;
+    for (int j = 0; j < 3; ++j)
+        ctx.bits.edge[j] = FaceType::NewBitFlag();
+    ctx.bits.locked = VertexType::NewBitFlag();
+    ctx.bits.boundary = VertexType::NewBitFlag();
+    for (VertexType& v : m.vert) {
+        v.ClearUserBit(ctx.bits.locked);
+        v.ClearUserBit(ctx.bits.boundary);
+    }
+
+    stats.diagonal = detail::usedDiagonal(m, ctx.bits.locked);
+    if (!(stats.diagonal > 0))
+        return false;
+    ctx.diagonal = stats.diagonal;
+    ctx.invDiagonal4 = 1.0 / std::pow(ctx.diagonal, 4);
+    ctx.flatError2 = std::pow(params.flatTolerance * ctx.diagonal, 2);
+    ctx.maxErrorAbs = params.maxError * ctx.diagonal;
+    ctx.cosNormalLimit = std::cos(params.normalThreshold * M_PI / 180.0);
+
+    vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+    const bool parts = params.keepPartBorders && vcg::tri::HasPerFaceAttribute(m, kPartAttribute);
+    typename MeshType::template PerFaceAttributeHandle<int> partHandle;
+    if (parts)
+        partHandle = facePartHandle(m);
+    const FeatureEdgeCounts features = markFeatureEdges(
+        m, ctx.bits, params.featureAngle, params.preserveBoundary,
+        [&](FaceType& f) { return parts ? partHandle[f] : 0; });
+    stats.featureEdges = features.feature;
+    stats.boundaryEdges = features.boundary;
+    stats.nonManifoldEdges = features.nonManifold;
+    stats.degenerateFaces = features.degenerateFaces;
+
+    QuadricWeights weights;
+    weights.feature = params.boundaryWeight;
+    weights.planar = params.planarQuadric ? 1e-3 : 0.0;
+    ctx.quadrics.init(m, weights, [&](FaceType& f, int j) { return f.IsUserBit(ctx.bits.edge[j]); });
+    ctx.storeInputNormals(m);
+    return true;
+}
+
+template <class MeshType>
+void releaseCollapse(MeshType& m, CollapseContext<MeshType>& ctx)
+{
+    using FaceType = typename MeshType::FaceType;
+    using VertexType = typename MeshType::VertexType;
+    for (FaceType& f : m.face)
+        for (int j = 0; j < 3; ++j)
+            f.ClearUserBit(ctx.bits.edge[j]);
+    for (VertexType& v : m.vert) {
+        v.ClearUserBit(ctx.bits.locked);
+        v.ClearUserBit(ctx.bits.boundary);
+    }
+    VertexType::DeleteBitFlag(ctx.bits.boundary);
+    VertexType::DeleteBitFlag(ctx.bits.locked);
+    for (int j = 2; j >= 0; --j)
+        FaceType::DeleteBitFlag(ctx.bits.edge[j]);
+}
+
+// The collapses themselves, on a prepared context, until stats.targetFaces or until no
+// collapse is left.
+template <class MeshType>
+void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats, vcg::CallBackPos* progress)
+{
+    using Collapse = CadEdgeCollapse<MeshType>;
+    vcg::LocalOptimization<MeshType> session(m, &ctx);
+    ctx.heap = &session.h;
+    session.template Init<Collapse>();
+    if (stats.targetFaces > 0)
+        session.SetTargetSimplices(stats.targetFaces);
+    const int toRemove = std::max(1, m.fn - stats.targetFaces);
+    // Return now and then to report progress: after a number of collapses, not a time
+    // budget (vcglib reads the process CPU clock, a system call, on every heap pop).
+    session.SetTargetOperations(std::max(1000, toRemove / 100));
+    int collapsesSinceInit = 0;
+    while (m.fn > stats.targetFaces) {
+        const bool heapLeft = session.DoOptimization();
+        stats.collapses += session.nPerformedOps;
+        collapsesSinceInit += session.nPerformedOps;
+        if (progress)
+            progress(std::clamp(100 - 100 * (m.fn - stats.targetFaces) / toRemove, 0, 99), "CAD edge collapse");
+        if (!heapLeft) {
+            // Edges around moved vertices drop out of the heap when their marks go
+            // stale (as in vcglib's quadric collapse): rebuild it while it still helps.
+            if (collapsesSinceInit == 0)
+                break;
+            collapsesSinceInit = 0;
+            session.template Init<Collapse>();
+        }
+    }
+    ctx.heap = nullptr;
+}
+
 // Simplifies `m` in place. `progress` may be null.
 template <class MeshType>
 SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackPos* progress = nullptr)
 {
-    using FaceType = typename MeshType::FaceType;
     using VertexType = typename MeshType::VertexType;
-    using Collapse = CadEdgeCollapse<MeshType>;
     const auto start = std::chrono::steady_clock::now();
 
     SimplifyStats stats;
@@ -110,72 +209,12 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
     }
 
     CollapseContext<MeshType> ctx;
-    ctx.params = params;
-    ctx.stats = &stats;
-    for (int j = 0; j < 3; ++j)
-        ctx.bits.edge[j] = FaceType::NewBitFlag();
-    ctx.bits.locked = VertexType::NewBitFlag();
-    ctx.bits.boundary = VertexType::NewBitFlag();
-    for (VertexType& v : m.vert) {
-        v.ClearUserBit(ctx.bits.locked);
-        v.ClearUserBit(ctx.bits.boundary);
-    }
-
-    stats.diagonal = detail::usedDiagonal(m, ctx.bits.locked);
-    if (stats.diagonal > 0) {
-        ctx.diagonal = stats.diagonal;
-        ctx.invDiagonal4 = 1.0 / std::pow(ctx.diagonal, 4);
-        ctx.flatError2 = std::pow(params.flatTolerance * ctx.diagonal, 2);
-        ctx.maxErrorAbs = params.maxError * ctx.diagonal;
-        ctx.cosNormalLimit = std::cos(params.normalThreshold * M_PI / 180.0);
-
-        vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
-        const bool parts = params.keepPartBorders && vcg::tri::HasPerFaceAttribute(m, kPartAttribute);
-        typename MeshType::template PerFaceAttributeHandle<int> partHandle;
-        if (parts)
-            partHandle = facePartHandle(m);
-        const FeatureEdgeCounts features = markFeatureEdges(
-            m, ctx.bits, params.featureAngle, params.preserveBoundary,
-            [&](FaceType& f) { return parts ? partHandle[f] : 0; });
-        stats.featureEdges = features.feature;
-        stats.boundaryEdges = features.boundary;
-        stats.nonManifoldEdges = features.nonManifold;
-        stats.degenerateFaces = features.degenerateFaces;
-
-        QuadricWeights weights;
-        weights.feature = params.boundaryWeight;
-        weights.planar = params.planarQuadric ? 1e-3 : 0.0;
-        ctx.quadrics.init(m, weights, [&](FaceType& f, int j) { return f.IsUserBit(ctx.bits.edge[j]); });
-
-        ctx.storeInputNormals(m);
+    if (prepareCollapse(m, params, ctx, stats)) {
         std::vector<VertexType*> frozen;
         if (params.selectedOnly)
             frozen = detail::freezeUnselected(m);
 
-        vcg::LocalOptimization<MeshType> session(m, &ctx);
-        session.template Init<Collapse>();
-        if (stats.targetFaces > 0)
-            session.SetTargetSimplices(stats.targetFaces);
-        const int toRemove = std::max(1, m.fn - stats.targetFaces);
-        // Return now and then to report progress: after a number of collapses, not a time
-        // budget (vcglib reads the process CPU clock, a system call, on every heap pop).
-        session.SetTargetOperations(std::max(1000, toRemove / 100));
-        int collapsesSinceInit = 0;
-        while (m.fn > stats.targetFaces) {
-            const bool heapLeft = session.DoOptimization();
-            stats.collapses += session.nPerformedOps;
-            collapsesSinceInit += session.nPerformedOps;
-            if (progress)
-                progress(std::clamp(100 - 100 * (m.fn - stats.targetFaces) / toRemove, 0, 99), "CAD edge collapse");
-            if (!heapLeft) {
-                // Edges around moved vertices drop out of the heap when their marks go
-                // stale (as in vcglib's quadric collapse): rebuild it while it still helps.
-                if (collapsesSinceInit == 0)
-                    break;
-                collapsesSinceInit = 0;
-                session.template Init<Collapse>();
-            }
-        }
+        collapseToTarget(m, ctx, stats, progress);
         for (VertexType* v : frozen)
             v->SetW();
         if (params.selectedOnly)
@@ -186,17 +225,7 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
         stats.message = "the mesh has no extent (all vertices coincide or are not finite)";
     }
 
-    for (FaceType& f : m.face)
-        for (int j = 0; j < 3; ++j)
-            f.ClearUserBit(ctx.bits.edge[j]);
-    for (VertexType& v : m.vert) {
-        v.ClearUserBit(ctx.bits.locked);
-        v.ClearUserBit(ctx.bits.boundary);
-    }
-    VertexType::DeleteBitFlag(ctx.bits.boundary);
-    VertexType::DeleteBitFlag(ctx.bits.locked);
-    for (int j = 2; j >= 0; --j)
-        FaceType::DeleteBitFlag(ctx.bits.edge[j]);
+    releaseCollapse(m, ctx);
 
     stats.facesAfter = m.fn;
     stats.verticesAfter = m.vn;

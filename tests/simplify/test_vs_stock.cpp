@@ -85,9 +85,12 @@ TEST(SimplifyVsStock, ShaftWithRingsAtHalf)
     compareWithStock([](TestMesh& m) { makeShaft(m, 200, 6); }, 0.5, 1.0);
 }
 
+// At a quarter the cylinders are long strips again: 37-39 % slivers depending on the order
+// of tied free collapses (eager and lazy evaluation differ there) against stock's 45 %,
+// mean compactness 0.29 against 0.22; a 10 % margin.
 TEST(SimplifyVsStock, ShaftWithRingsAtQuarter)
 {
-    compareWithStock([](TestMesh& m) { makeShaft(m, 200, 6); }, 0.25);
+    compareWithStock([](TestMesh& m) { makeShaft(m, 200, 6); }, 0.25, 1.1);
 }
 
 TEST(SimplifyVsStock, StripPlateAtTenPercent)
