@@ -79,8 +79,12 @@ struct ProfilePoint {
 struct RevolveSpec {
     int segments = 64;         // around the axis
     int cylinderRings = 1;     // subdivisions of spans of constant radius (1: long strips)
-    double keywayHalfAngle = 0;// > 0: vertices of the keyway span within ±angle (rad) of +x
-    double keywayZ0 = 0, keywayZ1 = 0;  // ... and z in [z0, z1] are flattened onto a plane
+    // A keyway milled into the step of radius keywayRadius: one plane x = keywayRadius ·
+    // cos(keywayHalfAngle) cuts every ring with z in [z0, z1] and r <= keywayRadius (a ring
+    // of a larger step at z0 is the shoulder face's rim, which the cutter does not reach).
+    double keywayHalfAngle = 0;  // > 0: there is a keyway
+    double keywayRadius = 0;
+    double keywayZ0 = 0, keywayZ1 = 0;
 };
 
 // Surface of revolution of a profile (z increasing along the part, r = 0 closes with a
@@ -99,9 +103,8 @@ inline int revolve(CadBuilder& b, const std::vector<ProfilePoint>& profile, cons
         for (int j = 0; j < n; ++j) {
             const double t = 2 * M_PI * j / n;
             double x = r * std::cos(t), y = r * std::sin(t);
-            if (spec.keywayHalfAngle > 0 && z >= spec.keywayZ0 && z <= spec.keywayZ1 &&
-                std::abs(std::remainder(t, 2 * M_PI)) < spec.keywayHalfAngle)
-                x = std::min(x, r * std::cos(spec.keywayHalfAngle));
+            if (spec.keywayHalfAngle > 0 && z >= spec.keywayZ0 && z <= spec.keywayZ1 && r <= spec.keywayRadius)
+                x = std::min(x, spec.keywayRadius * std::cos(spec.keywayHalfAngle));
             ring[j] = b.addPoint(x, y, z);
         }
         return ring;
@@ -128,7 +131,7 @@ inline int revolve(CadBuilder& b, const std::vector<ProfilePoint>& profile, cons
     return first;
 }
 
-// A stepped shaft with chamfers, shoulders and a flat keyway on the last step: 100 long,
+// A stepped shaft with chamfers, shoulders and a flat keyway on the last step: 101 long,
 // radius 10..15. centerBore > 0 replaces the end fans with centre-drill annuli.
 inline std::vector<ProfilePoint> shaftProfile(double centerBore = 0)
 {
@@ -141,9 +144,10 @@ inline RevolveSpec shaftSpec(int segments, int cylinderRings = 1)
     RevolveSpec s;
     s.segments = segments;
     s.cylinderRings = cylinderRings;
-    s.keywayHalfAngle = 0.5;
+    s.keywayHalfAngle = 0.5;  // on the r = 12 step, open through the end chamfer
+    s.keywayRadius = 12;
     s.keywayZ0 = 70;
-    s.keywayZ1 = 100;
+    s.keywayZ1 = 101;
     return s;
 }
 
