@@ -3,7 +3,8 @@
 // as MeshLab's filter sets it up, meshoptimizer and CGAL Garland–Heckbert. Each run is a
 // forked process (peak memory per run); prints one Markdown table.
 //   simplify_bench [--sizes 24000,250000,1000000] [--reductions 50,90]
-//                  [--tools cadlod,vcglib,meshopt,cgal] [--assembly-segments 1024]
+//                  [--tools cadlod,vcglib,meshopt,cgal,direct] [--assembly-segments 1024]
+//   direct: no simplifier, the part tessellated by the generator at about the target size
 //                  [--dump-ply DIR]   (also write each input mesh, for meshlab_stock.sh)
 //                  [--quality 0]      (time and memory only, e.g. under a profiler)
 #include "cad_meshes.h"
@@ -38,6 +39,9 @@ namespace {
 struct MeshSpec {
     std::string name;
     std::function<void(TestMesh&)> build;
+    // The same part as the exporter would tessellate it with about this many triangles:
+    // the reference a simplifier's output can be held against (tool "direct").
+    std::function<void(TestMesh&, int)> direct;
 };
 
 struct Row {
@@ -61,22 +65,39 @@ MeshSpec shaft(int triangles)
     const double scale = std::sqrt(triangles / 24000.0);
     const int segments = int(std::lround(1200 * scale));
     const int rings = std::max(1, int(std::lround((double(triangles) / segments - 14) / 6)));
-    return {"shaft " + std::to_string(cadlod::test::shaftTriangles(segments, rings, false)), [=](TestMesh& m) {
-                cadlod::test::CadBuilder b;
-                cadlod::test::revolve(b, cadlod::test::shaftProfile(2.0), cadlod::test::shaftSpec(segments, rings));
-                b.build(m);
+    auto build = [](TestMesh& m, int segments, int rings) {
+        cadlod::test::CadBuilder b;
+        cadlod::test::revolve(b, cadlod::test::shaftProfile(2.0), cadlod::test::shaftSpec(segments, rings));
+        b.build(m);
+    };
+    return {"shaft " + std::to_string(cadlod::test::shaftTriangles(segments, rings, false)),
+            [=](TestMesh& m) { build(m, segments, rings); },
+            [=](TestMesh& m, int target) {
+                const int perSegment = cadlod::test::shaftTriangles(1, 1, false);
+                build(m, std::max(8, int(std::lround(double(target) / perSegment))), 1);
             }};
+}
+
+int assemblyTriangles(int segments)
+{
+    cadlod::test::CadBuilder b;
+    cadlod::test::assembly(b, segments);
+    return int(b.triangles.size());
 }
 
 MeshSpec assembly(int segments)
 {
-    TestMesh probe;
-    cadlod::test::CadBuilder b;
-    cadlod::test::assembly(b, segments);
-    return {"assembly " + std::to_string(b.triangles.size()), [=](TestMesh& m) {
-                cadlod::test::CadBuilder a;
-                cadlod::test::assembly(a, segments);
-                a.build(m, true);
+    auto build = [](TestMesh& m, int segments) {
+        cadlod::test::CadBuilder a;
+        cadlod::test::assembly(a, segments);
+        a.build(m, true);
+    };
+    return {"assembly " + std::to_string(assemblyTriangles(segments)), [=](TestMesh& m) { build(m, segments); },
+            [=](TestMesh& m, int target) {
+                int coarse = 8;
+                while (coarse < segments && assemblyTriangles(coarse + 8) <= target)
+                    coarse += 8;
+                build(m, coarse);
             }};
 }
 
@@ -115,7 +136,10 @@ Row runOne(const MeshSpec& spec, const std::string& tool, int reduction)
     spec.build(m);
     r.in = m.fn;
     const int target = int(std::lround(m.fn * (1.0 - reduction / 100.0)));
-    simplifyWith(tool, m, target, r.seconds);
+    if (tool == "direct")
+        spec.direct(m, target);
+    else
+        simplifyWith(tool, m, target, r.seconds);
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     r.peakKb = usage.ru_maxrss;
