@@ -30,7 +30,8 @@ void addPlacementParameters(RichParameterList& par)
                            "Largest rotation of a face normal in one collapse."));
     par.addParam(RichFloat("minCompactness", d.minCompactness, "Minimum compactness",
                            "Never create a triangle less compact than this, unless the neighbourhood was already "
-                           "worse."));
+                           "worse. Collapses that cost no error (flat regions, straight lines) must not create one "
+                           "below 0.1 either. 0: no shape guard."));
     par.addParam(RichFloat("qualityThreshold", d.qualityThreshold, "Quality threshold",
                            "Collapses that cost (almost) no error, in flat regions and along straight lines, wait longer "
                            "when their new triangles have a mean compactness below this. 0: ordered by area only."));

@@ -76,6 +76,9 @@ struct CollapseContext : public vcg::BaseParameterClass {
     double largestError = 0.0;    // over executed collapses
     typename vcg::LocalOptimization<MeshType>::HeapType* heap = nullptr;  // for re-queued entries
     std::vector<RingFace> ring;   // scratch of the edge being evaluated
+    std::vector<int> ringChangedAt;  // per vertex: GlobalMark when a face around it last changed
+    int& ringChanged(const VertexType* v) { return ringChangedAt[v - vertexBase]; }
+    const VertexType* vertexBase = nullptr;
     std::vector<vcg::Point3f> inputNormal;  // per face index: unit normal in the input
     const typename MeshType::FaceType* faceBase = nullptr;
 
@@ -84,6 +87,8 @@ struct CollapseContext : public vcg::BaseParameterClass {
     void storeInputNormals(MeshType& m)
     {
         faceBase = m.face.empty() ? nullptr : &m.face[0];
+        vertexBase = m.vert.empty() ? nullptr : &m.vert[0];
+        ringChangedAt.assign(m.vert.size(), std::numeric_limits<int>::min());
         inputNormal.assign(m.face.size(), vcg::Point3f(0, 0, 0));
         for (std::size_t i = 0; i < m.face.size(); ++i) {
             const auto& f = m.face[i];
@@ -151,7 +156,7 @@ public:
     bool IsFeasible(vcg::BaseParameterClass* pp) override
     {
         Context& ctx = *static_cast<Context*>(pp);
-        if (!evaluated_) {
+        if (!evaluated_ || ringChangedSinceEvaluation(ctx)) {
             evaluate(ctx);
             if (feasible_ && ctx.heap && !ctx.heap->empty() && this->_priority > ctx.heap->front().pri) {
                 requeue(*ctx.heap);
@@ -194,16 +199,24 @@ public:
         ctx.largestError = std::max(ctx.largestError, double(error_));
     }
 
+    // The surviving vertex's edges are pushed again (its quadric changed), and so are the
+    // edges among its neighbours, which an earlier refusal may have taken out of the heap.
+    // The neighbours' other edges keep their entries (their quadrics did not change, so
+    // their bounds still hold) but are marked for a new evaluation when they reach the
+    // top: vcglib's quadric collapse marks them out of date instead, and they drop out of
+    // the heap until it is rebuilt.
     void UpdateHeap(HeapType& heap, vcg::BaseParameterClass* pp) override
     {
-        ++this->GlobalMark();
+        Context& ctx = *static_cast<Context*>(pp);
+        const int mark = ++this->GlobalMark();
         VertexType* v1 = this->pos.V(1);
-        v1->IMark() = this->GlobalMark();
+        v1->IMark() = mark;
+        ctx.ringChanged(v1) = mark;
         for (VFIterator vfi(v1); !vfi.End(); ++vfi) {
             vfi.V1()->ClearV();
             vfi.V2()->ClearV();
-            vfi.V1()->IMark() = this->GlobalMark();
-            vfi.V2()->IMark() = this->GlobalMark();
+            ctx.ringChanged(vfi.V1()) = mark;
+            ctx.ringChanged(vfi.V2()) = mark;
         }
         for (VFIterator vfi(v1); !vfi.End(); ++vfi) {
             if (!vfi.V1()->IsV() && vfi.V1()->IsRW()) {
@@ -251,6 +264,11 @@ public:
     float error() const { return error_; }
 
 private:
+    bool ringChangedSinceEvaluation(Context& ctx) const
+    {
+        return ctx.ringChanged(this->pos.cV(0)) > evaluatedAt_ || ctx.ringChanged(this->pos.cV(1)) > evaluatedAt_;
+    }
+
     // The heap owns and deletes the popped entry: a copy, now evaluated, goes back in.
     void requeue(HeapType& heap) const
     {
@@ -366,6 +384,7 @@ private:
         bool onlyIfFlat;  // allowed only if it costs no more than the flat floor
     };
     static constexpr int kMaxCandidates = 32;
+    static constexpr double kSliver = 0.1;  // compactness below which a face counts as a sliver
 
     // Both endpoints, evenly spaced interior points and the quadric optimum (if well
     // conditioned and near the edge), with their costs. A fixed endpoint keeps its place.
@@ -420,6 +439,7 @@ private:
     void evaluate(Context& ctx)
     {
         evaluated_ = true;
+        evaluatedAt_ = this->GlobalMark();
         feasible_ = true;
         VertexType* v0 = this->pos.V(0);
         VertexType* v1 = this->pos.V(1);
@@ -458,14 +478,19 @@ private:
         const double tieLimit = minCost * (1.0 + ctx.params.tieTolerance) + flatFloor;
 
         // No new face below minCompactness, unless it is still better than the worst now.
+        // A collapse that costs nothing must not make a sliver either: any later collapse
+        // can do its work, and a sliver made for free is shape lost for nothing (the rings
+        // shaft at half: 61 % -> 30 % slivers, stock 57 %).
         const double floor = std::min(ctx.params.minCompactness, n.worstCompactness);
+        const double minFree = ctx.params.minCompactness > 0 ? std::max(kSliver, ctx.params.minCompactness) : 0.0;
+        const double freeFloor = std::min(minFree, n.worstCompactness);
         int best = -1;
         PlacementScore bestScore;
         bool anyFlip = false;
         for (int i = 0; i < count; ++i) {
             if (cand[i].cost > tieLimit)
                 continue;
-            const PlacementScore s = score(ctx, cand[i].p, floor);
+            const PlacementScore s = score(ctx, cand[i].p, cand[i].cost <= flatFloor ? freeFloor : floor);
             anyFlip |= s.flipped;
             if (s.valid && (best < 0 || s.meanCompactness > bestScore.meanCompactness ||
                             (s.meanCompactness == bestScore.meanCompactness && cand[i].cost < cand[best].cost))) {
@@ -477,7 +502,7 @@ private:
             for (int i = 0; i < count; ++i) {
                 if (cand[i].cost <= tieLimit || (best >= 0 && cand[i].cost >= cand[best].cost))
                     continue;
-                const PlacementScore s = score(ctx, cand[i].p, floor);
+                const PlacementScore s = score(ctx, cand[i].p, cand[i].cost <= flatFloor ? freeFloor : floor);
                 anyFlip |= s.flipped;
                 if (s.valid) {
                     best = i;
@@ -501,6 +526,7 @@ private:
     float error_ = 0.0f;
     bool feasible_ = true;
     bool evaluated_ = false;
+    int evaluatedAt_ = 0;  // GlobalMark when evaluated
 };
 
 }  // namespace cadlod

@@ -77,17 +77,13 @@ TEST(SimplifyVsStock, ShaftAtTenPercent)
     compareWithStock([](TestMesh& m) { makeShaft(m, 400); }, 0.1);
 }
 
-// At half, both remove mostly the free vertices of the inner rings (straight lines): the
-// triangles differ little (0.195 vs 0.167 here; the order of tied free collapses changes it
-// by ±0.01 between builds), so only "not worse"; the clear margin is asserted at a tenth.
+// At half stock removes the free vertices of the inner rings (straight lines) and makes
+// long strips; free collapses here may not make slivers, so the segments are merged instead.
 TEST(SimplifyVsStock, ShaftWithRingsAtHalf)
 {
-    compareWithStock([](TestMesh& m) { makeShaft(m, 200, 6); }, 0.5, 1.0);
+    compareWithStock([](TestMesh& m) { makeShaft(m, 200, 6); }, 0.5);
 }
 
-// At a quarter the cylinders are long strips again and both keep about as many slivers
-// (42 % vs 46 %): the clear margin is asserted at a tenth, where the placement decides
-// how the ring segments are merged (22 % vs 43 % slivers here).
 TEST(SimplifyVsStock, ShaftWithRingsAtTenPercent)
 {
     compareWithStock([](TestMesh& m) { makeShaft(m, 200, 6); }, 0.1);
