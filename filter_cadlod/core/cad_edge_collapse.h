@@ -18,8 +18,13 @@
 // (the quadric cost of its cheapest candidate, no look at the faces around it) and is
 // evaluated in full only when it reaches the top. If its real priority is then above the
 // next entry's, it goes back into the heap with that value. Most entries go stale before
-// they reach the top, so most full evaluations (O(valence) per candidate) are never done:
-// around a 1024-valent fan centre every collapse pushes ~2000 edges.
+// they reach the top, so most full evaluations (O(valence) per candidate) are never done.
+// An evaluated entry whose faces changed since (a neighbour collapsed) is evaluated again
+// when it reaches the top.
+//
+// Shape guards: no collapse may create a face below minCompactness unless the faces around
+// the edge were already worse, and a free collapse (cost within the flat floor) none below
+// 0.1 (a sliver): free collapses can wait for a shape-keeping one.
 //
 // vcglib pitfalls handled here: the base constructor would call the base ComputePriority,
 // so this class sets its own fields; ComputePosition is not virtual in vcglib, so the
