@@ -7,7 +7,7 @@
 // relative tolerance of the cheapest cost, or within an absolute floor (flat regions),
 // are tied; the tied candidate whose surrounding triangles have the highest mean
 // compactness wins. Priority = quadric cost of the chosen position (normalised by the
-// bbox diagonal), plus a small floor that orders the (nearly) free collapses of flat
+// bbox diagonal; the sum over the merged planes, as in Garland–Heckbert), plus a small floor that orders the (nearly) free collapses of flat
 // regions and straight lines: smallest merged area and best shape first (the floor is
 // divided by the mean compactness of the new triangles over qualityThreshold, capped at
 // 1). Dividing the whole priority by the shape, as vcglib's QualityThr does, delays real
@@ -412,14 +412,15 @@ private:
         return count;
     }
 
-    // Priority of a collapse: the mean squared distance to the merged planes, plus the flat
-    // floor that keeps free collapses ordered (smallest merged area, best shape first)
-    // instead of tied at ~0. `shape` in (0, 1]: 1 for well-shaped results.
+    // Priority of a collapse: the quadric cost (the weighted sum of squared distances to the
+    // merged planes, not their mean: a vertex that stands for many planes weighs more),
+    // plus the flat floor that keeps free collapses ordered (smallest merged weight, best
+    // shape first) instead of tied at ~0. `shape` in (0, 1]: 1 for well-shaped results.
+    // Both terms are normalised by the bbox diagonal, so the order is scale-free.
     static ScalarType priorityOf(const Context& ctx, double cost, double area, double shape)
     {
         const double diag2 = ctx.diagonal * ctx.diagonal;
-        const double meanSquaredDistance = area > 0 ? cost / area : cost / diag2;
-        return ScalarType((meanSquaredDistance + ctx.flatError2 * area / (diag2 * shape)) / diag2);
+        return ScalarType((cost / diag2 + ctx.flatError2 * area / (diag2 * shape)) / diag2);
     }
 
     // Never above the priority evaluate() finds: the cheapest of all candidates (evaluate

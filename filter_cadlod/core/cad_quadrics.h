@@ -1,6 +1,6 @@
 // Per-vertex error quadrics for the CAD edge collapse (Garland–Heckbert):
-//  - every face adds its plane, weighted by its area (capped, see kAreaCapOfMean), to its
-//    three vertices;
+//  - every face adds its plane to its three vertices, all with about the same weight (see
+//    kAreaCapOfMean);
 //  - every feature edge (boundary, crease, part border) adds, for each face along it, the
 //    plane through the edge perpendicular to that face, weighted by boundaryWeight × the
 //    face's (capped) area, so that moving the edge sideways by d costs what moving that face off
@@ -78,11 +78,14 @@ public:
     std::size_t bytes() const { return quadric_.capacity() * sizeof(Quadric) + area_.capacity() * sizeof(double); }
 
 private:
-    // Face weights are areas capped at a quarter of the mean face area: otherwise the big
-    // faces CAD exporters make of flat regions outweigh the small ones next to them, and
-    // the mean squared distance (cost / area) hides a deviation concentrated on the small
-    // ones (shaft 24k at 90 %: Hausdorff 0.019 % -> 0.012 % of the diagonal).
-    static constexpr double kAreaCapOfMean = 0.25;
+    // Face weights are areas capped at 1 % of the mean face area, so nearly every plane
+    // weighs the same, as in Garland and Heckbert's paper and CGAL; only nearly degenerate
+    // faces, whose normals say little, weigh less. Area weights let the big faces CAD
+    // exporters make of flat regions and long strips outweigh the small ones beside them
+    // and hide a deviation concentrated there; a cap at a quarter of the mean still did:
+    // 90 % Hausdorff over 7 bench tessellations, worst 0.0103 % -> 0.0070 %, mean
+    // 0.0071 % -> 0.0058 % (with the priority on the quadric cost, see cad_edge_collapse.h).
+    static constexpr double kAreaCapOfMean = 0.01;
 
     template <class MeshType>
     static double meanFaceArea(MeshType& m)
