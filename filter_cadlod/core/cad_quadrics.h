@@ -7,8 +7,9 @@
 //    its plane by d costs. (A weight of |e|² would make the long thin faces CAD exporters
 //    put along features nearly free to slide: holes closed up at 90 % reduction.)
 //  - planarQuadric adds the same edge planes with a tiny weight on all other edges.
-// The accumulated face area is kept beside each quadric, so sqrt(cost / area) is an RMS
-// distance in model units: the collapse error reported and bounded by maxError.
+// The accumulated weight (the capped face areas, called area below) is kept beside each
+// quadric, so sqrt(cost / area) is an RMS distance in model units: the collapse error
+// reported and bounded by maxError.
 #pragma once
 
 #include "feature_edges.h"
