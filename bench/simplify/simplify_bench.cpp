@@ -4,9 +4,10 @@
 // forked process (peak memory per run); prints one Markdown table.
 //   simplify_bench [--sizes 24000,250000,1000000] [--reductions 50,90]
 //                  [--tools cadlod,vcglib,meshopt,cgal,direct] [--assembly-segments 1024]
-//   direct: no simplifier, the part tessellated by the generator at about the target size
 //                  [--dump-ply DIR]   (also write each input mesh, for meshlab_stock.sh)
 //                  [--quality 0]      (time and memory only, e.g. under a profiler)
+// Tool "direct" runs no simplifier: the part tessellated by the generator at about the
+// target size, the reference a simplifier's output can be held against.
 #include "cad_meshes.h"
 #include "mesh_checks.h"
 #include "peer_cgal.h"

@@ -74,7 +74,6 @@ struct CollapseContext : public vcg::BaseParameterClass {
     VertexQuadrics<VertexType> quadrics;
     SimplifyStats* stats = nullptr;
     double diagonal = 1.0;
-    double invDiagonal4 = 1.0;
     double flatError2 = 0.0;      // (flatTolerance * diagonal)²
     double maxErrorAbs = 0.0;     // 0: unbounded
     double cosNormalLimit = -1.0;
@@ -92,8 +91,6 @@ struct CollapseContext : public vcg::BaseParameterClass {
     void storeInputNormals(MeshType& m)
     {
         faceBase = m.face.empty() ? nullptr : &m.face[0];
-        vertexBase = m.vert.empty() ? nullptr : &m.vert[0];
-        ringChangedAt.assign(m.vert.size(), std::numeric_limits<int>::min());
         inputNormal.assign(m.face.size(), vcg::Point3f(0, 0, 0));
         for (std::size_t i = 0; i < m.face.size(); ++i) {
             const auto& f = m.face[i];
@@ -105,6 +102,13 @@ struct CollapseContext : public vcg::BaseParameterClass {
             if (len > 0 && std::isfinite(len))
                 inputNormal[i] = vcg::Point3f::Construct(n / len);
         }
+    }
+
+    // No face has changed yet.
+    void clearRingChanges(MeshType& m)
+    {
+        vertexBase = m.vert.empty() ? nullptr : &m.vert[0];
+        ringChangedAt.assign(m.vert.size(), std::numeric_limits<int>::min());
     }
 };
 
@@ -423,6 +427,13 @@ private:
         return ScalarType((cost / diag2 + ctx.flatError2 * area / (diag2 * shape)) / diag2);
     }
 
+    Quadric mergedQuadric(const Context& ctx) const
+    {
+        Quadric q = ctx.quadrics.quadric(this->pos.cV(0));
+        q += ctx.quadrics.quadric(this->pos.cV(1));
+        return q;
+    }
+
     // Never above the priority evaluate() finds: the cheapest of all candidates (evaluate
     // may refuse some, never adds any) and the best shape.
     ScalarType lowerBound(const Context& ctx)
@@ -431,8 +442,7 @@ private:
         VertexType* v1 = this->pos.V(1);
         if (v0->IsUserBit(ctx.bits.locked) || v1->IsUserBit(ctx.bits.locked))
             return std::numeric_limits<ScalarType>::max();
-        Quadric q = ctx.quadrics.quadric(v0);
-        q += ctx.quadrics.quadric(v1);
+        const Quadric q = mergedQuadric(ctx);
         Candidate cand[kMaxCandidates];
         const int count = candidates(ctx, q, vcg::Point3d::Construct(v0->cP()), vcg::Point3d::Construct(v1->cP()),
                                      false, false, cand);
@@ -458,8 +468,7 @@ private:
         if (ctx.ring.empty())
             return reject(stats.rejectedTopology);  // would delete a whole component
 
-        Quadric q = ctx.quadrics.quadric(v0);
-        q += ctx.quadrics.quadric(v1);
+        const Quadric q = mergedQuadric(ctx);
         const double area = ctx.quadrics.area(v0) + ctx.quadrics.area(v1);
         // A vertex on a boundary keeps its place (or takes the other boundary vertex's), and
         // so does a crease vertex when the edge leaves the crease: other candidates must cost
@@ -490,13 +499,14 @@ private:
         const double floor = std::min(ctx.params.minCompactness, n.worstCompactness);
         const double minFree = ctx.params.minCompactness > 0 ? std::max(kSliver, ctx.params.minCompactness) : 0.0;
         const double freeFloor = std::min(minFree, n.worstCompactness);
+        auto floorFor = [&](const Candidate& c) { return c.cost <= flatFloor ? freeFloor : floor; };
         int best = -1;
         PlacementScore bestScore;
         bool anyFlip = false;
         for (int i = 0; i < count; ++i) {
             if (cand[i].cost > tieLimit)
                 continue;
-            const PlacementScore s = score(ctx, cand[i].p, cand[i].cost <= flatFloor ? freeFloor : floor);
+            const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]));
             anyFlip |= s.flipped;
             if (s.valid && (best < 0 || s.meanCompactness > bestScore.meanCompactness ||
                             (s.meanCompactness == bestScore.meanCompactness && cand[i].cost < cand[best].cost))) {
@@ -508,7 +518,7 @@ private:
             for (int i = 0; i < count; ++i) {
                 if (cand[i].cost <= tieLimit || (best >= 0 && cand[i].cost >= cand[best].cost))
                     continue;
-                const PlacementScore s = score(ctx, cand[i].p, cand[i].cost <= flatFloor ? freeFloor : floor);
+                const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]));
                 anyFlip |= s.flipped;
                 if (s.valid) {
                     best = i;

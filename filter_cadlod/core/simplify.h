@@ -102,7 +102,6 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     if (!(stats.diagonal > 0))
         return false;
     ctx.diagonal = stats.diagonal;
-    ctx.invDiagonal4 = 1.0 / std::pow(ctx.diagonal, 4);
     ctx.flatError2 = std::pow(params.flatTolerance * ctx.diagonal, 2);
     ctx.maxErrorAbs = params.maxError * ctx.diagonal;
     ctx.cosNormalLimit = std::cos(params.normalThreshold * M_PI / 180.0);
@@ -125,6 +124,7 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     weights.planar = params.planarQuadric ? 1e-3 : 0.0;
     ctx.quadrics.init(m, weights, [&](FaceType& f, int j) { return f.IsUserBit(ctx.bits.edge[j]); });
     ctx.storeInputNormals(m);
+    ctx.clearRingChanges(m);
     return true;
 }
 
@@ -169,8 +169,8 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
         if (progress)
             progress(std::clamp(100 - 100 * (m.fn - stats.targetFaces) / toRemove, 0, 99), "CAD edge collapse");
         if (!heapLeft) {
-            // Edges around moved vertices drop out of the heap when their marks go
-            // stale (as in vcglib's quadric collapse): rebuild it while it still helps.
+            // Refused edges left the heap, and an edge whose neighbourhood has changed
+            // since may be acceptable now: rebuild it while that still helps.
             if (collapsesSinceInit == 0)
                 break;
             collapsesSinceInit = 0;
