@@ -1,0 +1,8 @@
+# corpus_bench: cadlod vs peers on the CAD corpus with the shading measure (issue 14).
+# Included from bench/simplify/CMakeLists.txt (needs CGAL and meshoptimizer found there).
+add_executable(corpus_bench corpus_bench.cpp)
+target_include_directories(corpus_bench PRIVATE
+  "${CMAKE_SOURCE_DIR}/tests/simplify" "${CMAKE_SOURCE_DIR}/tests/support")
+target_link_libraries(corpus_bench PRIVATE cadlod::mesh_core cadlod::shading CGAL::CGAL "${MESHOPTIMIZER_LIBRARY}")
+target_compile_definitions(corpus_bench PRIVATE CADLOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+target_compile_options(corpus_bench PRIVATE -Wall -Wextra)

@@ -1,0 +1,532 @@
+// Shading and accuracy of cadlod's simplifier against its peers on real CAD parts (issue 14):
+// every corpus PLY (scripts/make_cad_corpus.sh, bench/corpus/README.md) and two bench
+// meshes of tests/simplify/cad_meshes.h, at several reductions, each tool in a forked process.
+// Per reduction, one Markdown table with a row per part: cadlod's figures and its ratio to
+// the best peer on that part; then a summary line in issue 14's terms.
+//
+//   corpus_bench [--corpus DIR]            default .cache/cad-corpus
+//                [--parts GLOB,GLOB...]    part names (file stem, e.g. lqfp64_fine, bench_shaft)
+//                [--reductions 50,75,90,95]
+//                [--tools cadlod,vcglib,vcglib-cad,cgal,meshopt]  (cadlod is always run)
+//                [--quick]                 6 tuning parts, reductions 75,95
+//                [--no-bench-meshes] [--resolution 256] [--raw FILE] [--images DIR]
+// --raw writes every tool's row (one Markdown table); --images writes the shading
+// difference images of every run (use with --parts).
+#include "cad_meshes.h"
+#include "mesh_checks.h"
+#include "peer_cgal.h"
+#include "peer_meshopt.h"
+#include "stock_quadric.h"
+#include "test_mesh.h"
+
+#include "ply_read.h"
+#include "shading_error.h"
+
+#include "core/compactness.h"
+#include "core/hausdorff.h"
+#include "core/simplify.h"
+
+#include <vcg/complex/algorithms/update/normal.h>
+
+#include <fnmatch.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <dirent.h>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using cadlod::test::TestMesh;
+
+namespace {
+
+struct Part {
+    std::string name;
+    bool heldOut = false;
+    std::function<bool(TestMesh&)> build;
+};
+
+struct Row {
+    bool ok = false;
+    int in = 0, target = 0, out = 0;
+    double seconds = 0;
+    double peakMb = 0;
+    double visible = 0, silhouette = 0, meanDelta = 0;  // shading
+    double hMax = 0, hMean = 0;                          // % of diagonal
+    double slivers = 0;                                   // % of faces, compactness < 0.1
+    int folded = 0, newNonManifold = 0;
+};
+
+std::vector<std::string> split(const std::string& s)
+{
+    std::vector<std::string> out;
+    std::stringstream in(s);
+    for (std::string item; std::getline(in, item, ',');)
+        if (!item.empty())
+            out.push_back(item);
+    return out;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point t)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// A PLY of the corpus as a TestMesh, with its solids as cadlod part ids.
+bool loadCorpusPly(const std::string& path, TestMesh& m)
+{
+    cadlod::shading::IndexedMesh im;
+    std::vector<int> parts;
+    std::string error;
+    if (!cadlod::shading::readPly(path, im, error, &parts)) {
+        std::fprintf(stderr, "%s: %s\n", path.c_str(), error.c_str());
+        return false;
+    }
+    m.Clear();
+    auto vi = vcg::tri::Allocator<TestMesh>::AddVertices(m, int(im.xyz.size() / 3));
+    for (std::size_t v = 0; v < im.xyz.size() / 3; ++v, ++vi)
+        vi->P() = vcg::Point3f(float(im.xyz[3 * v]), float(im.xyz[3 * v + 1]), float(im.xyz[3 * v + 2]));
+    auto fi = vcg::tri::Allocator<TestMesh>::AddFaces(m, int(im.tri.size() / 3));
+    for (std::size_t f = 0; f < im.tri.size() / 3; ++f, ++fi)
+        for (int k = 0; k < 3; ++k)
+            fi->V(k) = &m.vert[im.tri[3 * f + k]];
+    if (std::set<int>(parts.begin(), parts.end()).size() > 1) {
+        auto h = vcg::tri::Allocator<TestMesh>::GetPerFaceAttribute<int>(m, cadlod::kPartAttribute);
+        for (std::size_t f = 0; f < parts.size(); ++f)
+            h[f] = parts[f];
+    }
+    return true;
+}
+
+cadlod::shading::IndexedMesh toIndexed(const TestMesh& m)
+{
+    cadlod::shading::IndexedMesh out;
+    std::vector<std::uint32_t> index(m.vert.size(), 0);
+    for (std::size_t v = 0; v < m.vert.size(); ++v)
+        if (!m.vert[v].IsD()) {
+            index[v] = std::uint32_t(out.xyz.size() / 3);
+            for (int k = 0; k < 3; ++k)
+                out.xyz.push_back(double(m.vert[v].cP()[k]));
+        }
+    for (const auto& f : m.face)
+        if (!f.IsD())
+            for (int k = 0; k < 3; ++k)
+                out.tri.push_back(index[f.cV(k) - &m.vert[0]]);
+    return out;
+}
+
+void simplifyWith(const std::string& tool, TestMesh& m, int target, double& seconds)
+{
+    if (tool == "cgal") {
+        cadlod::bench::CgalMesh sm = cadlod::bench::toCgal(m);
+        const auto t = std::chrono::steady_clock::now();
+        cadlod::bench::cgalSimplify(sm, target);
+        seconds = secondsSince(t);
+        cadlod::bench::fromCgal(sm, m);
+        return;
+    }
+    if (tool == "vcglib" || tool == "vcglib-cad")  // MeshLab has normals on every loaded mesh
+        vcg::tri::UpdateNormal<TestMesh>::PerVertexNormalizedPerFaceNormalized(m);
+    const auto t = std::chrono::steady_clock::now();
+    if (tool == "cadlod") {
+        cadlod::SimplifyParams p;
+        p.targetFaces = target;
+        cadlod::simplify(m, p);
+    } else if (tool == "vcglib") {
+        cadlod::test::stockSimplify(m, target, cadlod::test::stockDefaults<TestMesh>());
+    } else if (tool == "vcglib-cad") {
+        // MeshLab's dialog with the options a CAD user ticks: planar simplification, normal
+        // check, preserve topology, preserve boundary.
+        vcg::tri::TriEdgeCollapseQuadricParameter pp = cadlod::test::stockDefaults<TestMesh>();
+        pp.QualityQuadric = true;
+        pp.NormalCheck = true;
+        pp.PreserveTopology = true;
+        pp.PreserveBoundary = true;
+        cadlod::test::stockSimplify(m, target, pp);
+    } else if (tool == "meshopt") {
+        cadlod::bench::meshoptSimplify(m, target);
+    }
+    seconds = secondsSince(t);
+}
+
+// Resident memory figures of this process, kB ("VmRSS", "VmHWM").
+long statusKb(const char* key)
+{
+    std::ifstream in("/proc/self/status");
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind(key, 0) == 0)
+            return std::atol(line.c_str() + std::strlen(key) + 1);
+    return 0;
+}
+
+struct PartContext {
+    const Part* part = nullptr;
+    TestMesh* original = nullptr;
+    const cadlod::shading::Reference* reference = nullptr;
+    int originalNonManifold = 0;
+    std::string imageDir;
+};
+
+Row runOne(const PartContext& ctx, const std::string& tool, int reduction)
+{
+    Row r;
+    TestMesh m;
+    if (!ctx.part->build(m))
+        return r;
+    r.in = m.fn;
+    r.target = int(std::lround(m.fn * (1.0 - reduction / 100.0)));
+    // Peak memory of this run above what the process held before it (the parent's input
+    // mesh and renders are shared): reset the high-water mark, Linux >= 4.0.
+    {
+        std::ofstream clear("/proc/self/clear_refs");
+        clear << "5";
+    }
+    const long baseKb = statusKb("VmRSS:");
+    simplifyWith(tool, m, r.target, r.seconds);
+    r.peakMb = std::max(0L, statusKb("VmHWM:") - baseKb) / 1024.0;
+    r.out = m.fn;
+
+    vcg::tri::Allocator<TestMesh>::CompactEveryVector(m);
+    const cadlod::shading::IndexedMesh im = toIndexed(m);
+    std::string prefix;
+    if (!ctx.imageDir.empty())
+        prefix = ctx.imageDir + "/" + ctx.part->name + "_" + std::to_string(reduction) + "_" + tool + "_";
+    const cadlod::shading::Result s = ctx.reference->compare(im.ref(), prefix);
+    r.visible = s.visiblePercent;
+    r.silhouette = s.silhouettePercent;
+    r.meanDelta = s.meanAbsDelta;
+    const std::size_t samples = std::min<std::size_t>(ctx.original->fn, 1000000);
+    const cadlod::SymmetricHausdorff h = cadlod::symmetricHausdorff(*ctx.original, m, samples);
+    r.hMax = 100 * h.maxFraction();
+    r.hMean = 100 * h.meanFraction();
+    r.slivers = 100 * cadlod::meshCompactness(m).shareBelow01;
+    r.folded = cadlod::test::foldedFaces(m, *ctx.original, 90.0);
+    r.newNonManifold = std::max(0, cadlod::test::nonManifoldEdges(m) - ctx.originalNonManifold);
+    r.ok = true;
+    return r;
+}
+
+Row runForked(const PartContext& ctx, const std::string& tool, int reduction)
+{
+    std::fflush(stdout);
+    int fds[2];
+    if (pipe(fds) != 0)
+        return {};
+    const pid_t pid = fork();
+    if (pid == 0) {
+        close(fds[0]);
+        const Row r = runOne(ctx, tool, reduction);
+        const ssize_t written = write(fds[1], &r, sizeof r);
+        _exit(written == ssize_t(sizeof r) ? 0 : 1);
+    }
+    close(fds[1]);
+    Row r;
+    const ssize_t got = read(fds[0], &r, sizeof r);
+    close(fds[0]);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (got != ssize_t(sizeof r))
+        r.ok = false;
+    return r;
+}
+
+std::set<std::string> heldOutIds(const std::string& manifest)
+{
+    std::set<std::string> ids;
+    std::ifstream in(manifest);
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream words(line);
+        std::string id, splitName;
+        if (words >> id >> splitName && id[0] != '#' && splitName == "heldout")
+            ids.insert(id);
+    }
+    return ids;
+}
+
+std::vector<Part> corpusParts(const std::string& dir, const std::set<std::string>& heldOut)
+{
+    std::vector<std::string> files;
+    if (DIR* d = opendir((dir + "/ply").c_str())) {
+        while (const dirent* e = readdir(d)) {
+            const std::string name = e->d_name;
+            if (name.size() > 4 && name.compare(name.size() - 4, 4, ".ply") == 0)
+                files.push_back(name);
+        }
+        closedir(d);
+    }
+    std::sort(files.begin(), files.end());
+    std::vector<Part> parts;
+    for (const std::string& f : files) {
+        Part p;
+        p.name = f.substr(0, f.size() - 4);
+        const std::string id = p.name.substr(0, p.name.rfind('_'));
+        p.heldOut = heldOut.count(id) > 0;
+        const std::string path = dir + "/ply/" + f;
+        p.build = [path](TestMesh& m) { return loadCorpusPly(path, m); };
+        parts.push_back(p);
+    }
+    return parts;
+}
+
+std::vector<Part> benchParts()
+{
+    std::vector<Part> parts;
+    // The 24k-triangle stepped shaft and the small assembly of simplify_bench.
+    parts.push_back({"bench_shaft", false, [](TestMesh& m) {
+                         cadlod::test::CadBuilder b;
+                         cadlod::test::revolve(b, cadlod::test::shaftProfile(2.0), cadlod::test::shaftSpec(1200, 1));
+                         b.build(m);
+                         return true;
+                     }});
+    parts.push_back({"bench_assembly", false, [](TestMesh& m) {
+                         cadlod::test::CadBuilder b;
+                         cadlod::test::assembly(b, 256);
+                         b.build(m, true);
+                         return true;
+                     }});
+    return parts;
+}
+
+bool matches(const std::string& name, const std::vector<std::string>& globs)
+{
+    if (globs.empty())
+        return true;
+    for (const std::string& g : globs)
+        if (fnmatch(g.c_str(), name.c_str(), 0) == 0)
+            return true;
+    return false;
+}
+
+std::string ratioText(double mine, double best)
+{
+    char buf[32];
+    if (best <= 0)
+        std::snprintf(buf, sizeof buf, mine <= 0 ? "1.00" : "inf");
+    else
+        std::snprintf(buf, sizeof buf, "%.2f", mine / best);
+    return buf;
+}
+
+double ratio(double mine, double best) { return best <= 0 ? (mine <= 0 ? 1.0 : 1e9) : mine / best; }
+
+// A peer counts for "best" only when it reached the face target (within 2 % + 2 faces):
+// stopping short keeps more of the surface and would be an unfair yardstick.
+bool reached(const Row& r) { return r.ok && r.out <= r.target + std::max(2.0, 0.02 * r.target); }
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    std::string corpus = std::string(CADLOD_SOURCE_DIR) + "/.cache/cad-corpus";
+    std::string reductionsText = "50,75,90,95", toolsText = "cadlod,vcglib,vcglib-cad,cgal,meshopt";
+    std::string rawPath, imageDir;
+    std::vector<std::string> globs;
+    bool quick = false, withBench = true;
+    int resolution = 256;
+    for (int i = 1; i < argc; ++i) {
+        const std::string key = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) {
+                std::fprintf(stderr, "%s needs a value\n", key.c_str());
+                std::exit(2);
+            }
+            return argv[++i];
+        };
+        if (key == "--corpus") corpus = value();
+        else if (key == "--parts") globs = split(value());
+        else if (key == "--reductions") reductionsText = value();
+        else if (key == "--tools") toolsText = value();
+        else if (key == "--quick") quick = true;
+        else if (key == "--no-bench-meshes") withBench = false;
+        else if (key == "--resolution") resolution = std::stoi(value());
+        else if (key == "--raw") rawPath = value();
+        else if (key == "--images") imageDir = value();
+        else {
+            std::fprintf(stderr, "unknown option %s (see the head of corpus_bench.cpp)\n", key.c_str());
+            return 2;
+        }
+    }
+    if (quick) {
+        if (globs.empty())
+            globs = {"lqfp64_fine", "cp_radial_d10_fine", "trafo_ei42_fine", "valve_pentode_fine",
+                     "wemos_d1_mini_fine", "occt_linkrods_coarse"};
+        reductionsText = "75,95";
+    }
+    std::vector<std::string> tools = {"cadlod"};
+    for (const std::string& t : split(toolsText))
+        if (t != "cadlod" && std::find(tools.begin(), tools.end(), t) == tools.end()) {
+            if (t != "vcglib" && t != "vcglib-cad" && t != "cgal" && t != "meshopt") {
+                std::fprintf(stderr, "unknown tool %s\n", t.c_str());
+                return 2;
+            }
+            tools.push_back(t);
+        }
+    std::string peerList;
+    for (std::size_t i = 1; i < tools.size(); ++i)
+        peerList += (i > 1 ? ", " : "") + tools[i];
+    std::vector<int> reductions;
+    for (const std::string& r : split(reductionsText))
+        reductions.push_back(std::stoi(r));
+
+    std::vector<Part> all;
+    if (withBench)
+        all = benchParts();
+    const std::vector<Part> corpusList =
+        corpusParts(corpus, heldOutIds(std::string(CADLOD_SOURCE_DIR) + "/bench/corpus/manifest.txt"));
+    if (corpusList.empty())
+        std::fprintf(stderr, "note: no corpus PLY in %s/ply (scripts/make_cad_corpus.sh makes it)\n", corpus.c_str());
+    all.insert(all.end(), corpusList.begin(), corpusList.end());
+    std::vector<Part> parts;
+    for (const Part& p : all)
+        if (matches(p.name, globs))
+            parts.push_back(p);
+    if (parts.empty()) {
+        std::fprintf(stderr, "no part selected\n");
+        return 1;
+    }
+
+    // results[reduction][part][tool]
+    std::map<int, std::vector<std::map<std::string, Row>>> results;
+    for (int red : reductions)
+        results[red].resize(parts.size());
+    cadlod::shading::Options shadingOptions;
+    shadingOptions.resolution = resolution;
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t pi = 0; pi < parts.size(); ++pi) {
+        TestMesh original;
+        if (!parts[pi].build(original))
+            continue;
+        const cadlod::shading::IndexedMesh input = toIndexed(original);
+        const cadlod::shading::Reference reference(input.ref(), shadingOptions);
+        PartContext ctx{&parts[pi], &original, &reference, cadlod::test::nonManifoldEdges(original), imageDir};
+        for (int red : reductions)
+            for (const std::string& tool : tools)
+                results[red][pi][tool] = runForked(ctx, tool, red);
+        std::fprintf(stderr, "[%5.0f s] %zu/%zu %s (%d triangles)\n", secondsSince(start), pi + 1, parts.size(),
+                     parts[pi].name.c_str(), original.fn);
+    }
+
+    if (!rawPath.empty()) {
+        std::FILE* raw = std::fopen(rawPath.c_str(), "w");
+        if (raw) {
+            std::fprintf(raw, "| part | red. | tool | tris in | target | tris out | shading %% | silh. %% | mean |dI| | "
+                              "H max %%diag | H mean %%diag | slivers %% | flipped | new non-manif. | s | peak MB |\n"
+                              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+            for (int red : reductions)
+                for (std::size_t pi = 0; pi < parts.size(); ++pi)
+                    for (const std::string& tool : tools) {
+                        const Row& r = results[red][pi][tool];
+                        if (!r.ok) {
+                            std::fprintf(raw, "| %s | %d%% | %s | failed |\n", parts[pi].name.c_str(), red, tool.c_str());
+                            continue;
+                        }
+                        std::fprintf(raw,
+                                     "| %s%s | %d%% | %s | %d | %d | %d | %.3f | %.3f | %.2f | %.4f | %.5f | %.1f | %d | "
+                                     "%d | %.3f | %.1f |\n",
+                                     parts[pi].name.c_str(), parts[pi].heldOut ? "*" : "", red, tool.c_str(), r.in,
+                                     r.target, r.out, r.visible, r.silhouette, r.meanDelta, r.hMax, r.hMean, r.slivers,
+                                     r.folded, r.newNonManifold, r.seconds, r.peakMb);
+                    }
+            std::fclose(raw);
+        }
+    }
+
+    std::printf("Parts marked * are held out (bench/corpus/manifest.txt). Ratios are cadlod / best peer on the part "
+                "(peers: %s, counted only when they reached the face target); slivers: cadlod minus best, in points.\n",
+                peerList.c_str());
+    struct Totals {
+        int pairs = 0, shadingOk = 0, hausdorffOk = 0, sliverOk = 0, reachedTarget = 0, flips = 0, flipParts = 0;
+        int noPeer = 0;
+        double worstShading = 0, worstHausdorff = 0, worstSliver = -1e9;
+        std::string worstShadingPart, worstHausdorffPart, worstSliverPart;
+    };
+    Totals overall;
+    for (int red : reductions) {
+        std::printf("\n### %d %% reduction\n\n", red);
+        std::printf("| part | tris in | out | shading %% | ×best | mean |ΔI| | H max %%diag | ×best | H mean %%diag | "
+                    "slivers %% | −best | flipped | new NM | s | MB |\n");
+        std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        Totals t;
+        for (std::size_t pi = 0; pi < parts.size(); ++pi) {
+            const Row& c = results[red][pi]["cadlod"];
+            const std::string name = parts[pi].name + (parts[pi].heldOut ? "*" : "");
+            if (!c.ok) {
+                std::printf("| %s | failed |\n", name.c_str());
+                continue;
+            }
+            double bestVisible = 1e300, bestH = 1e300, bestSliver = 1e300;
+            std::string bestVisibleTool, bestHTool, bestSliverTool;
+            for (const std::string& tool : tools) {
+                if (tool == "cadlod")
+                    continue;
+                const Row& p = results[red][pi][tool];
+                if (!reached(p))
+                    continue;
+                if (p.visible < bestVisible) bestVisible = p.visible, bestVisibleTool = tool;
+                if (p.hMax < bestH) bestH = p.hMax, bestHTool = tool;
+                if (p.slivers < bestSliver) bestSliver = p.slivers, bestSliverTool = tool;
+            }
+            const bool anyPeer = !bestVisibleTool.empty();
+            ++t.pairs;
+            t.reachedTarget += reached(c);
+            t.flips += c.folded;
+            t.flipParts += c.folded > 0;
+            std::string shadingRatio = "-", hRatio = "-", sliverDelta = "-";
+            if (anyPeer) {
+                const double rs = ratio(c.visible, bestVisible), rh = ratio(c.hMax, bestH);
+                const double ds = c.slivers - bestSliver;
+                t.shadingOk += rs <= 1.1 || c.visible <= 0.2;
+                t.hausdorffOk += rh <= 1.1;
+                t.sliverOk += ds <= 1.0;
+                if (rs > t.worstShading) t.worstShading = rs, t.worstShadingPart = name;
+                if (rh > t.worstHausdorff) t.worstHausdorff = rh, t.worstHausdorffPart = name;
+                if (ds > t.worstSliver) t.worstSliver = ds, t.worstSliverPart = name;
+                shadingRatio = ratioText(c.visible, bestVisible) + " " + bestVisibleTool;
+                hRatio = ratioText(c.hMax, bestH) + " " + bestHTool;
+                char buf[48];
+                std::snprintf(buf, sizeof buf, "%+.1f %s", ds, bestSliverTool.c_str());
+                sliverDelta = buf;
+            } else {
+                ++t.noPeer;
+            }
+            std::printf("| %s | %d | %d%s | %.3f | %s | %.2f | %.4f | %s | %.5f | %.1f | %s | %d | %d | %.2f | %.0f |\n",
+                        name.c_str(), c.in, c.out, reached(c) ? "" : " (short)", c.visible, shadingRatio.c_str(),
+                        c.meanDelta, c.hMax, hRatio.c_str(), c.hMean, c.slivers, sliverDelta.c_str(), c.folded,
+                        c.newNonManifold, c.seconds, c.peakMb);
+        }
+        const int judged = t.pairs - t.noPeer;
+        auto pct = [](int a, int b) { return b ? 100.0 * a / b : 0.0; };
+        std::printf("\n**%d %%:** shading ≤ 1.1× best or ≤ 0.2 %%: %d/%d (%.0f %%); Hausdorff ≤ 1.1× best: %d/%d "
+                    "(%.0f %%); slivers ≤ best + 1 pt: %d/%d (%.0f %%); worst ratios: shading %.2f (%s), Hausdorff "
+                    "%.2f (%s), slivers %+.1f pts (%s); flipped faces %d (on %d parts); face target reached %d/%d.\n",
+                    red, t.shadingOk, judged, pct(t.shadingOk, judged), t.hausdorffOk, judged,
+                    pct(t.hausdorffOk, judged), t.sliverOk, judged, pct(t.sliverOk, judged), t.worstShading,
+                    t.worstShadingPart.c_str(), t.worstHausdorff, t.worstHausdorffPart.c_str(), t.worstSliver,
+                    t.worstSliverPart.c_str(), t.flips, t.flipParts, t.reachedTarget, t.pairs);
+        overall.pairs += t.pairs;
+        overall.noPeer += t.noPeer;
+        overall.shadingOk += t.shadingOk;
+        overall.hausdorffOk += t.hausdorffOk;
+        overall.sliverOk += t.sliverOk;
+        overall.reachedTarget += t.reachedTarget;
+        overall.flips += t.flips;
+        overall.flipParts += t.flipParts;
+    }
+    const int judged = overall.pairs - overall.noPeer;
+    std::printf("\n**All (part, reduction) pairs:** shading ok %d/%d, Hausdorff ok %d/%d, slivers ok %d/%d, "
+                "flipped faces %d, face target reached %d/%d. Wall time %.0f s.\n",
+                overall.shadingOk, judged, overall.hausdorffOk, judged, overall.sliverOk, judged, overall.flips,
+                overall.reachedTarget, overall.pairs, secondsSince(start));
+    return 0;
+}
