@@ -3,13 +3,13 @@
 #    meshlab and meshlabserver;
 #  - the headers of the same version from Debian's source package (MeshLab src/common
 #    and the bundled vcglib), unpacked by scripts/bootstrap.sh.
+# Only the plugins (and the tests that run them) need it: with -DCADLOD_BUILD_PLUGINS=OFF
+# the cores are built from vcglib's headers alone (cmake/Vcglib.cmake, included here too).
 # Provides:
-#  cadlod::vcglib       vcglib + Eigen headers, for the MeshLab-independent cores
 #  cadlod::meshlab      everything a MeshLab plugin needs (headers, flags, Qt, libmeshlab-common)
 #  MESHLAB_BIN_DIR, MESHLAB_LIB_DIR, MESHLAB_PLUGIN_DIR, MESHLAB_VERSION
 
-set(MESHLAB_SOURCE_DIR "${CMAKE_SOURCE_DIR}/.cache/meshlab-src" CACHE PATH
-    "MeshLab source package of the installed meshlab version (scripts/bootstrap.sh unpacks it)")
+include(Vcglib)
 set(MESHLAB_LIB_DIR "/usr/lib/x86_64-linux-gnu/meshlab" CACHE PATH "Directory of libmeshlab-common.so")
 set(MESHLAB_PLUGIN_DIR "${MESHLAB_LIB_DIR}/plugins" CACHE PATH "MeshLab's system plugin directory")
 set(MESHLAB_BIN_DIR "/usr/bin" CACHE PATH "Directory of meshlab and meshlabserver")
@@ -28,7 +28,6 @@ endfunction()
 _cadlod_require_file("${MESHLAB_LIB_DIR}/libmeshlab-common.so" "libmeshlab-common.so (Debian package meshlab)")
 _cadlod_require_file("${MESHLAB_BIN_DIR}/meshlabserver" "meshlabserver (Debian package meshlab)")
 _cadlod_require_file("${MESHLAB_SOURCE_DIR}/src/common/interfaces.h" "MeshLab headers")
-_cadlod_require_file("${MESHLAB_SOURCE_DIR}/vcglib/vcg/complex/complex.h" "vcglib headers")
 
 # Source and binary must be the very same Debian version: plugins compiled against other
 # headers load but corrupt memory.
@@ -52,15 +51,9 @@ endif()
 set(MESHLAB_VERSION "${MESHLAB_BINARY_VERSION}")
 message(STATUS "cadlod: MeshLab ${MESHLAB_VERSION} (binary and source match)")
 
-find_package(Eigen3 REQUIRED NO_MODULE)
 find_package(Qt5 REQUIRED COMPONENTS Core Widgets OpenGL Xml XmlPatterns)
 find_package(OpenGL REQUIRED)
 find_package(ZLIB REQUIRED)
-
-add_library(cadlod_vcglib INTERFACE)
-add_library(cadlod::vcglib ALIAS cadlod_vcglib)
-target_include_directories(cadlod_vcglib SYSTEM INTERFACE "${MESHLAB_SOURCE_DIR}/vcglib")
-target_link_libraries(cadlod_vcglib INTERFACE Eigen3::Eigen)
 
 add_library(meshlab_common SHARED IMPORTED)
 set_target_properties(meshlab_common PROPERTIES

@@ -1,6 +1,6 @@
 #include "report_filter.h"
 
-#include "core/layer_metadata.h"
+#include "layer_metadata.h"
 #include "core/simplification_report.h"
 
 namespace cadlod {

@@ -4,9 +4,9 @@
 // only lit with them (light mode 2).
 #include "format_adapters.h"
 
-#include "core/layer_metadata.h"
+#include "layer_metadata.h"
 #include "flt_writer.h"
-#include "lod_set.h"
+#include "lod_assembly.h"
 
 #include <QElapsedTimer>
 

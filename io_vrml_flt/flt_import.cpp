@@ -3,7 +3,7 @@
 // face colors from the part colors and the part attributes of layer_metadata.h.
 #include "format_adapters.h"
 
-#include "core/layer_metadata.h"
+#include "layer_metadata.h"
 #include "flt_reader.h"
 
 #include <QElapsedTimer>

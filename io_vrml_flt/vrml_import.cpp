@@ -1,9 +1,9 @@
 // VRML import adapter: runs the MeshLab-independent reader (vrml/) and copies its
 // neutral scene into a CMeshO, with the part table and per-face part ids that the
-// simplifier and the OpenFlight exporter read (filter_cadlod/core/layer_metadata.h).
+// simplifier and the OpenFlight exporter read (filter_cadlod/metadata/layer_metadata.h).
 #include "format_adapters.h"
 
-#include "core/layer_metadata.h"
+#include "layer_metadata.h"
 #include "vrml/importer.h"
 #include "vrml/vertex_welding.h"
 

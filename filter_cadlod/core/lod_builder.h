@@ -8,7 +8,7 @@
 #include "compactness.h"
 #include "hausdorff.h"
 #include "layer_metadata.h"
-#include "lod_set.h"
+#include "lod_plan.h"
 #include "simplify.h"
 
 #include <vcg/complex/append.h>

@@ -1,4 +1,4 @@
-#include "core/lod_set.h"
+#include "core/lod_plan.h"
 
 #include <gtest/gtest.h>
 

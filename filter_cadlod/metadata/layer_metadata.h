@@ -8,6 +8,8 @@
 //    gathers the layers of one set from the document and writes them as one LOD model.
 #pragma once
 
+#include "lod_level.h"
+
 #include <vcg/complex/complex.h>
 
 #include <array>
@@ -21,18 +23,6 @@ struct PartInfo {
     std::array<float, 4> color{0.8f, 0.8f, 0.8f, 1.0f};  // diffuse RGBA, 0..1
 };
 using PartTable = std::vector<PartInfo>;
-
-struct LodLevel {
-    int setId = 0;             // layers with the same setId form one LOD set
-    int level = 0;             // 0 = original, finest
-    int faces = 0;
-    double reduction = 0.0;    // fraction of level-0 faces removed (0.9 = 90 %)
-    double hausdorffMax = 0.0; // symmetric Hausdorff distance to level 0, model units
-    double hausdorffMean = 0.0;
-    double switchIn = 0.0;     // FAR distance: visible while switchOut <= d < switchIn
-    double switchOut = 0.0;    // NEAR distance
-    std::array<double, 3> center{0, 0, 0};  // LOD center (level 0 bounding-box center)
-};
 
 inline constexpr const char* kPartAttribute = "cadlod_part";
 inline constexpr const char* kPartTableAttribute = "cadlod_parts";

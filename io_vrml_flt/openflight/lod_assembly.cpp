@@ -1,4 +1,4 @@
-#include "lod_set.h"
+#include "lod_assembly.h"
 
 #include <algorithm>
 

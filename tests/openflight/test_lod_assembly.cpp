@@ -1,6 +1,6 @@
 // Gathering the layers of an LOD set into one model (what the exporter does with the
 // document's layers).
-#include "lod_set.h"
+#include "lod_assembly.h"
 #include "model_fixtures.h"
 
 #include <gtest/gtest.h>
@@ -24,7 +24,7 @@ LodSetMember member(int setId, int level, double out, double in)
 
 }  // namespace
 
-TEST(LodSet, OrdersLevelsAndIgnoresOtherSets)
+TEST(LodAssembly, OrdersLevelsAndIgnoresOtherSets)
 {
     std::vector<LodSetMember> members{member(7, 2, 100, 400), member(7, 0, 0, 30), member(3, 0, 0, 10),
                                       member(7, 1, 30, 100)};
@@ -39,7 +39,7 @@ TEST(LodSet, OrdersLevelsAndIgnoresOtherSets)
     EXPECT_EQ(model.levels[2].triangleCount(), 2u * (2 * 4 * 4));
 }
 
-TEST(LodSet, RejectsUnusableSets)
+TEST(LodAssembly, RejectsUnusableSets)
 {
     LodModel model;
     std::string error;
