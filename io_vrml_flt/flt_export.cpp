@@ -54,6 +54,13 @@ std::vector<vcg::Point3f> fallbackNormals(const CMeshO& m)
     return n;
 }
 
+flt::Part partWith(const PartIdentity& identity)
+{
+    flt::Part part;
+    static_cast<PartIdentity&>(part) = identity;
+    return part;
+}
+
 bool usableNormal(const vcg::Point3f& n)
 {
     const float len = n.Norm();
@@ -76,10 +83,10 @@ PartGrouping groupFaces(MeshModel& mm)
     if (hasParts(m)) {
         auto facePart = facePartHandle(m);
         const PartTable table = partTableHandle(m)();
-        for (const PartInfo& info : table)
-            g.parts.push_back(flt::Part{info.name, info.color, {}, {}, {}, {}});
+        for (const PartIdentity& info : table)
+            g.parts.push_back(partWith(info));
         const int unassigned = int(g.parts.size());
-        g.parts.push_back(flt::Part{label + "_unassigned", {0.8f, 0.8f, 0.8f, 1.0f}, {}, {}, {}, {}});
+        g.parts.push_back(partWith({label + "_unassigned"}));
         for (std::size_t i = 0; i < m.face.size(); ++i) {
             const int p = facePart[i];
             g.partOfFace[i] = p >= 0 && p < unassigned ? p : unassigned;
@@ -93,14 +100,14 @@ PartGrouping groupFaces(MeshModel& mm)
             const std::uint32_t key = std::uint32_t(c[0]) << 24 | std::uint32_t(c[1]) << 16 | c[2] << 8 | c[3];
             auto [it, added] = byColor.emplace(key, int(g.parts.size()));
             if (added)
-                g.parts.push_back(flt::Part{label + (byColor.size() > 1 ? "_" + std::to_string(byColor.size()) : ""),
-                                            toRgba(c), {}, {}, {}, {}});
+                g.parts.push_back(partWith({label + (byColor.size() > 1 ? "_" + std::to_string(byColor.size()) : ""),
+                                            toRgba(c)}));
             g.partOfFace[i] = it->second;
         }
         if (!g.parts.empty())
             return g;
     }
-    g.parts.push_back(flt::Part{label, {0.8f, 0.8f, 0.8f, 1.0f}, {}, {}, {}, {}});
+    g.parts.push_back(partWith({label}));
     return g;
 }
 

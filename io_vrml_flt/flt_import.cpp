@@ -48,7 +48,7 @@ void fillLayer(const flt::Level& level, MeshModel& m, int& mask)
     PartTable table;
     for (std::size_t p = 0; p < level.parts.size(); ++p) {
         const flt::Part& part = level.parts[p];
-        table.push_back(PartInfo{part.name, part.color});
+        table.push_back(part);
         auto v = vcg::tri::Allocator<CMeshO>::AddVertices(cm, part.positions.size());
         const std::size_t firstVertex = std::size_t(vcg::tri::Index(cm, &*v));
         for (std::size_t i = 0; i < part.positions.size(); ++i, ++v) {

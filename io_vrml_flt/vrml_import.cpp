@@ -78,7 +78,7 @@ void moveScene(vrml::Scene& scene, const vrml::Welding* welding, CMeshO& m, vcg:
     std::vector<CVertexO*> partVertex;
     for (size_t p = 0; p < scene.parts.size(); ++p) {
         vrml::Part& part = scene.parts[p];
-        table.push_back({part.name, part.color});
+        table.push_back(part);
         const vcg::Color4b partColor = toColor(part.color);
         partVertex.resize(part.positions.size());
         for (size_t i = 0; i < part.positions.size(); ++i, ++sceneVertex) {

@@ -9,20 +9,16 @@
 #pragma once
 
 #include "lod_level.h"
+#include "part_identity.h"
 
 #include <vcg/complex/complex.h>
 
-#include <array>
-#include <string>
 #include <vector>
 
 namespace cadlod {
 
-struct PartInfo {
-    std::string name;                       // nearest DEF name or node path
-    std::array<float, 4> color{0.8f, 0.8f, 0.8f, 1.0f};  // diffuse RGBA, 0..1
-};
-using PartTable = std::vector<PartInfo>;
+// Indexed by the per-face part id.
+using PartTable = std::vector<PartIdentity>;
 
 inline constexpr const char* kPartAttribute = "cadlod_part";
 inline constexpr const char* kPartTableAttribute = "cadlod_parts";

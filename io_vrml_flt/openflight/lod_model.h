@@ -3,6 +3,8 @@
 // list of parts (one OpenFlight Object each), each an indexed triangle mesh.
 #pragma once
 
+#include "part_identity.h"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -17,11 +19,11 @@ using Vec3d = std::array<double, 3>;
 using Vec3f = std::array<float, 3>;
 using Vec2f = std::array<float, 2>;
 using Triangle = std::array<std::uint32_t, 3>;  // indices into the part's vertex arrays
-using Rgba = std::array<float, 4>;              // 0..1
+using cadlod::Rgba;                             // 0..1
 
-struct Part {
-    std::string name;
-    Rgba color{0.8f, 0.8f, 0.8f, 1.0f};
+// One Object: the part's identity (Object name in a Long ID record, face colour) and its
+// own indexed vertex pool.
+struct Part : PartIdentity {
     std::vector<Vec3d> positions;
     std::vector<Vec3f> normals;  // one per position, or empty
     std::vector<Vec2f> uvs;      // one per position, or empty

@@ -3,6 +3,7 @@
 // coordinates and optional per-triangle colors. No MeshLab dependency.
 #pragma once
 
+#include "part_identity.h"
 #include "vrml/diagnostics.h"
 
 #include <array>
@@ -16,9 +17,9 @@ using Vec3f = std::array<float, 3>;
 using Vec2f = std::array<float, 2>;
 using Rgba8 = std::array<uint8_t, 4>;
 
-struct Part {
-    std::string name;                 // nearest DEF name, or the node path
-    std::array<float, 4> color{0.8f, 0.8f, 0.8f, 1.0f};  // material diffuse + (1 - transparency)
+// A part as read: its identity (nearest DEF name, or the node path; material diffuse
+// + (1 - transparency)) and its triangles.
+struct Part : PartIdentity {
     std::vector<Vec3f> positions;
     std::vector<Vec3f> normals;       // empty or one per position
     std::vector<Rgba8> colors;        // empty or one per position

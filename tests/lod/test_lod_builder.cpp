@@ -20,7 +20,7 @@ void makeSphereWithTwoParts(TestMesh& m)
     auto part = facePartHandle(m);
     for (auto& f : m.face)
         part[f] = vcg::Barycenter(f)[2] > 0 ? 1 : 0;
-    partTableHandle(m)() = {PartInfo{"LOWER", {1, 0, 0, 1}}, PartInfo{"UPPER", {0, 0, 1, 1}}};
+    partTableHandle(m)() = {PartIdentity{"LOWER", {1, 0, 0, 1}}, PartIdentity{"UPPER", {0, 0, 1, 1}}};
 }
 
 int facesRepeatingAVertex(const TestMesh& m)
