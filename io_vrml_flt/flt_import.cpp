@@ -1,10 +1,11 @@
 // Opening an OpenFlight file: the openflight/ core reads it into the neutral LOD model,
-// and one level (the finest by default) becomes the layer, with per-vertex normals,
-// face colors from the part colors and the part attributes of layer_metadata.h.
+// and one level (the finest by default) becomes the layer through
+// mesh_io/lod_model_to_mesh.h (normals, face colors, the part attributes of
+// layer_metadata.h); here: parameters, logging, the layer's optional components.
 #include "format_adapters.h"
 
-#include "layer_metadata.h"
 #include "flt_reader.h"
+#include "lod_model_to_mesh.h"
 
 #include <QElapsedTimer>
 
@@ -22,58 +23,19 @@ void report(MeshIOInterface& plugin, GLLogStream::Levels level, const QString& t
 
 const char* const kLevel = "level";
 
-vcg::Color4b toColor(const flt::Rgba& c)
-{
-    auto byte = [](float v) { return static_cast<unsigned char>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
-    return vcg::Color4b(byte(c[0]), byte(c[1]), byte(c[2]), byte(c[3]));
-}
-
-bool allPartsHave(const flt::Level& level, bool (flt::Part::*has)() const)
-{
-    for (const flt::Part& p : level.parts)
-        if (!(p.*has)())
-            return false;
-    return !level.parts.empty();
-}
-
 void fillLayer(const flt::Level& level, MeshModel& m, int& mask)
 {
-    CMeshO& cm = m.cm;
-    const bool normals = allPartsHave(level, &flt::Part::hasNormals);
-    const bool uvs = allPartsHave(level, &flt::Part::hasUvs);
+    const bool normals = mesh_io::levelHasNormals(level);
+    const bool uvs = mesh_io::levelHasUvs(level);
     m.updateDataMask(MeshModel::MM_FACECOLOR);
     if (uvs)
         m.updateDataMask(MeshModel::MM_VERTTEXCOORD);
-    auto facePart = facePartHandle(cm);
-    PartTable table;
-    for (std::size_t p = 0; p < level.parts.size(); ++p) {
-        const flt::Part& part = level.parts[p];
-        table.push_back(part);
-        auto v = vcg::tri::Allocator<CMeshO>::AddVertices(cm, part.positions.size());
-        const std::size_t firstVertex = std::size_t(vcg::tri::Index(cm, &*v));
-        for (std::size_t i = 0; i < part.positions.size(); ++i, ++v) {
-            v->P() = vcg::Point3f(float(part.positions[i][0]), float(part.positions[i][1]), float(part.positions[i][2]));
-            if (normals)
-                v->N() = vcg::Point3f(part.normals[i][0], part.normals[i][1], part.normals[i][2]);
-            if (uvs)
-                v->T() = vcg::TexCoord2f(part.uvs[i][0], part.uvs[i][1]);
-        }
-        auto f = vcg::tri::Allocator<CMeshO>::AddFaces(cm, part.triangles.size());
-        for (const flt::Triangle& t : part.triangles) {
-            for (int k = 0; k < 3; ++k)
-                f->V(k) = &cm.vert[firstVertex + t[k]];
-            f->C() = toColor(part.color);
-            facePart[f] = int(p);
-            ++f;
-        }
-    }
-    partTableHandle(cm)() = table;
+    mesh_io::levelToMesh(level, m.cm);
     mask |= vcg::tri::io::Mask::IOM_FACECOLOR;
     if (normals)
         mask |= vcg::tri::io::Mask::IOM_VERTNORMAL;
     if (uvs)
         mask |= vcg::tri::io::Mask::IOM_VERTTEXCOORD;
-    vcg::tri::UpdateBounding<CMeshO>::Box(cm);
 }
 
 }  // namespace

@@ -1,15 +1,12 @@
-// VRML import adapter: runs the MeshLab-independent reader (vrml/) and copies its
-// neutral scene into a CMeshO, with the part table and per-face part ids that the
-// simplifier and the OpenFlight exporter read (filter_cadlod/metadata/layer_metadata.h).
+// VRML import adapter: parameters, logging and the layer's optional components around
+// the MeshLab-independent reader (vrml/) and its conversion into a mesh
+// (mesh_io/scene_to_mesh.h, instantiated for CMeshO).
 #include "format_adapters.h"
 
 #include "layer_metadata.h"
+#include "scene_to_mesh.h"
 #include "vrml/importer.h"
-#include "vrml/vertex_welding.h"
 
-#include <vcg/complex/algorithms/clean.h>
-#include <vcg/complex/algorithms/update/bounding.h>
-#include <vcg/complex/algorithms/update/normal.h>
 #include <wrap/io_trimesh/io_mask.h>
 
 #include <QElapsedTimer>
@@ -24,103 +21,6 @@ constexpr const char* kUnitScale = "vrmlUnitScale";
 constexpr const char* kMergeVertices = "vrmlMergeVertices";
 constexpr const char* kMergeTolerance = "vrmlMergeTolerance";
 constexpr const char* kNormals = "vrmlNormals";
-
-vcg::Color4b toColor(const vrml::Rgba8& c) { return vcg::Color4b(c[0], c[1], c[2], c[3]); }
-
-vcg::Color4b toColor(const std::array<float, 4>& c)
-{
-    auto b = [](float x) { return (unsigned char)std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f); };
-    return vcg::Color4b(b(c[0]), b(c[1]), b(c[2]), b(c[3]));
-}
-
-// Index of `texture` in the mesh's texture list (added if new); -1 for none.
-short textureIndexOf(CMeshO& m, const std::string& texture)
-{
-    if (texture.empty()) return -1;
-    auto it = std::find(m.textures.begin(), m.textures.end(), texture);
-    if (it != m.textures.end()) return short(it - m.textures.begin());
-    m.textures.push_back(texture);
-    return short(m.textures.size() - 1);
-}
-
-void setWedgeTexCoord(CFaceO& f, int k, const vrml::Part& part, uint32_t vertex, short textureIndex)
-{
-    if (part.texCoords.empty()) {
-        f.WT(k) = vcg::TexCoord2f(0, 0);
-        f.WT(k).N() = -1;
-        return;
-    }
-    f.WT(k) = vcg::TexCoord2f(part.texCoords[vertex][0], part.texCoords[vertex][1]);
-    f.WT(k).N() = textureIndex;
-}
-
-bool hasTexCoords(const vrml::Scene& scene)
-{
-    return std::any_of(scene.parts.begin(), scene.parts.end(), [](const vrml::Part& p) { return !p.texCoords.empty(); });
-}
-
-// Moves the scene into `m` (each part's arrays are freed once copied, to keep the peak
-// memory low); with `welding`, coincident vertices become one vertex whose normal is the
-// normalized sum of theirs (the first one's color wins).
-void moveScene(vrml::Scene& scene, const vrml::Welding* welding, CMeshO& m, vcg::CallBackPos* cb)
-{
-    const size_t vertexCount = welding ? welding->weldedCount : scene.vertexCount();
-    const size_t base = m.vert.size();
-    vcg::tri::Allocator<CMeshO>::AddVertices(m, vertexCount);
-    auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, scene.triangleCount());
-    std::vector<bool> written(welding ? vertexCount : 0, false);
-    auto partOf = facePartHandle(m);
-    PartTable& table = partTableHandle(m)();
-    table.clear();
-    size_t sceneVertex = 0, done = 0;
-    const size_t triangleCount = scene.triangleCount();
-    const bool wedgeTexCoords = vcg::tri::HasPerWedgeTexCoord(m);
-    std::vector<CVertexO*> partVertex;
-    for (size_t p = 0; p < scene.parts.size(); ++p) {
-        vrml::Part& part = scene.parts[p];
-        table.push_back(part);
-        const vcg::Color4b partColor = toColor(part.color);
-        partVertex.resize(part.positions.size());
-        for (size_t i = 0; i < part.positions.size(); ++i, ++sceneVertex) {
-            const size_t target = welding ? welding->weldedIndex[sceneVertex] : sceneVertex;
-            CVertexO& v = m.vert[base + target];
-            partVertex[i] = &v;
-            const vcg::Point3f normal = part.normals.empty()
-                                            ? vcg::Point3f(0, 0, 0)
-                                            : vcg::Point3f(part.normals[i][0], part.normals[i][1], part.normals[i][2]);
-            if (welding && written[target]) {
-                v.N() += normal;
-                continue;
-            }
-            if (welding) written[target] = true;
-            v.P() = vcg::Point3f(part.positions[i][0], part.positions[i][1], part.positions[i][2]);
-            v.N() = normal;
-            v.C() = part.colors.empty() ? partColor : toColor(part.colors[i]);
-        }
-        const short textureIndex = textureIndexOf(m, part.texture);
-        for (size_t t = 0; t < part.triangleCount(); ++t, ++fi) {
-            for (int k = 0; k < 3; ++k) {
-                const uint32_t local = part.triangles[3 * t + size_t(k)];
-                fi->V(k) = partVertex[local];
-                if (wedgeTexCoords) setWedgeTexCoord(*fi, k, part, local, textureIndex);
-            }
-            fi->C() = part.faceColors.empty() ? partColor : toColor(part.faceColors[t]);
-            partOf[fi] = int(p);
-        }
-        done += part.triangleCount();
-        part = vrml::Part{};
-        if (cb) cb(60 + int(30.0 * double(done) / double(std::max<size_t>(1, triangleCount))), "Building mesh");
-    }
-    if (welding)
-        for (size_t i = base; i < m.vert.size(); ++i) m.vert[i].N().Normalize();
-}
-
-int mergeCloseVertices(CMeshO& m, float tolerance)
-{
-    const int merged = vcg::tri::Clean<CMeshO>::MergeCloseVertex(m, tolerance);
-    vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
-    return merged;
-}
 
 // meshlabserver's -i path never gives an IO plugin a log (MeshLabInterface::Log is then
 // a no-op), so every report also goes to stderr.
@@ -177,21 +77,14 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
         return false;
     }
     vrml::Scene& scene = result.scene;
-    const size_t sceneVertices = scene.vertexCount();
     const qint64 parsedMs = timer.elapsed();
     mask = vcg::tri::io::Mask::IOM_VERTNORMAL | vcg::tri::io::Mask::IOM_VERTCOLOR | vcg::tri::io::Mask::IOM_FACECOLOR;
-    if (hasTexCoords(scene)) mask |= vcg::tri::io::Mask::IOM_WEDGTEXCOORD;
+    if (mesh_io::hasTexCoords(scene)) mask |= vcg::tri::io::Mask::IOM_WEDGTEXCOORD;
     m.Enable(mask);
-    const bool merge = !par.hasParameter(kMergeVertices) || par.getBool(kMergeVertices);
-    const float tolerance = par.hasParameter(kMergeTolerance) ? par.getFloat(kMergeTolerance) : 0.0f;
-    vrml::Welding welding;
-    if (merge) welding = vrml::weldCoincidentVertices(scene);
-    int merged = merge ? int(sceneVertices - welding.weldedCount) : 0;
-    moveScene(scene, merge ? &welding : nullptr, m.cm, cb);
-    welding = {};
-    if (merge && tolerance > 0) merged += mergeCloseVertices(m.cm, tolerance);
-    vcg::tri::UpdateNormal<CMeshO>::PerFaceNormalized(m.cm);
-    vcg::tri::UpdateBounding<CMeshO>::Box(m.cm);
+    mesh_io::SceneToMeshOptions toMesh;
+    toMesh.mergeVertices = !par.hasParameter(kMergeVertices) || par.getBool(kMergeVertices);
+    toMesh.mergeTolerance = par.hasParameter(kMergeTolerance) ? par.getFloat(kMergeTolerance) : 0.0f;
+    const int merged = mesh_io::sceneToMesh(scene, m.cm, toMesh, cb);
 
     const double seconds = std::max(1e-6, timer.elapsed() / 1000.0);
     char line[1024];

@@ -1,0 +1,150 @@
+// The MeshLab-free conversions (io_vrml_flt/mesh_io/) on cadlod::CoreMesh: what the
+// plugin does on a CMeshO, a command-line tool does on this mesh.
+#include "core_mesh.h"
+#include "layer_metadata.h"
+#include "lod_model_to_mesh.h"
+#include "mesh_to_lod_model.h"
+#include "scene_to_mesh.h"
+
+#include <gtest/gtest.h>
+
+using namespace cadlod;
+
+namespace {
+
+// Two parts that share the edge (1,0,0)-(0,1,0) without sharing vertices, as a CAD
+// exporter writes one face set per body.
+vrml::Scene twoPartScene()
+{
+    vrml::Scene scene;
+    vrml::Part a;
+    a.name = "BASE";
+    a.color = {1, 0, 0, 1};
+    a.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    a.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
+    a.triangles = {0, 1, 2};
+    vrml::Part b;
+    b.name = "LID";
+    b.color = {0, 0, 1, 1};
+    b.positions = {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    b.triangles = {0, 1, 2};
+    scene.parts = {a, b};
+    return scene;
+}
+
+void makeLevelMesh(CoreMesh& m, float z)
+{
+    auto v = vcg::tri::Allocator<CoreMesh>::AddVertices(m, 4);
+    v[0].P() = {0, 0, z};
+    v[1].P() = {1, 0, z};
+    v[2].P() = {1, 1, z};
+    v[3].P() = {0, 1, z};
+    vcg::tri::Allocator<CoreMesh>::AddFace(m, &m.vert[0], &m.vert[1], &m.vert[2]);
+    vcg::tri::Allocator<CoreMesh>::AddFace(m, &m.vert[0], &m.vert[2], &m.vert[3]);
+}
+
+}  // namespace
+
+TEST(MeshIo, SceneBecomesAWeldedMeshWithItsPartTable)
+{
+    vrml::Scene scene = twoPartScene();
+    CoreMesh m;
+    const int merged = mesh_io::sceneToMesh(scene, m, {});
+    EXPECT_EQ(merged, 2);  // the two shared corners
+    EXPECT_EQ(m.vn, 4);
+    EXPECT_EQ(m.fn, 2);
+    ASSERT_TRUE(hasParts(m));
+    const PartTable& table = partTableHandle(m)();
+    ASSERT_EQ(table.size(), 2u);
+    EXPECT_EQ(table[0].name, "BASE");
+    EXPECT_EQ(table[1].name, "LID");
+    EXPECT_EQ(table[1].color, (Rgba{0, 0, 1, 1}));
+    auto part = facePartHandle(m);
+    EXPECT_EQ(part[0], 0);
+    EXPECT_EQ(part[1], 1);
+    EXPECT_EQ(m.face[0].cC(), vcg::Color4b(255, 0, 0, 255));
+    EXPECT_EQ(m.face[1].cC(), vcg::Color4b(0, 0, 255, 255));
+    EXPECT_TRUE(scene.parts[0].positions.empty()) << "the scene's arrays are freed once copied";
+
+    vrml::Scene unwelded = twoPartScene();
+    CoreMesh soup;
+    mesh_io::SceneToMeshOptions keep;
+    keep.mergeVertices = false;
+    EXPECT_EQ(mesh_io::sceneToMesh(unwelded, soup, keep), 0);
+    EXPECT_EQ(soup.vn, 6);
+}
+
+TEST(MeshIo, MeshBecomesALevelWithOneObjectPerPartAndUsableNormals)
+{
+    vrml::Scene scene = twoPartScene();
+    CoreMesh m;
+    mesh_io::sceneToMesh(scene, m, {});
+    mesh_io::LevelStats stats;
+    mesh_io::LevelOptions options;
+    options.label = "layer";
+    const flt::Level level = mesh_io::meshToLevel(m, options, stats);
+    ASSERT_EQ(level.parts.size(), 2u);
+    EXPECT_EQ(level.parts[0].name, "BASE");
+    EXPECT_EQ(level.parts[1].name, "LID");
+    EXPECT_EQ(level.parts[1].color, (Rgba{0, 0, 1, 1}));
+    for (const flt::Part& p : level.parts) {
+        ASSERT_TRUE(p.hasNormals());
+        ASSERT_EQ(p.triangles.size(), 1u);
+        for (const flt::Vec3f& n : p.normals)  // LID had no normals: the face normal stands in
+            EXPECT_NEAR(n[2], 1.0f, 1e-6f);
+    }
+    EXPECT_EQ(stats.skippedFaces, 0u);
+}
+
+TEST(MeshIo, LevelBecomesAMeshAndBack)
+{
+    vrml::Scene scene = twoPartScene();
+    CoreMesh m;
+    mesh_io::sceneToMesh(scene, m, {});
+    mesh_io::LevelStats stats;
+    const flt::Level level = mesh_io::meshToLevel(m, {"layer"}, stats);
+    CoreMesh back;
+    mesh_io::levelToMesh(level, back);
+    EXPECT_EQ(back.fn, 2);
+    EXPECT_EQ(back.vn, 6);  // one vertex pool per Object
+    const PartTable& table = partTableHandle(back)();
+    ASSERT_EQ(table.size(), 2u);
+    EXPECT_EQ(table[0].name, "BASE");
+    EXPECT_EQ(table[1].name, "LID");
+    EXPECT_EQ(back.face[1].cC(), vcg::Color4b(0, 0, 255, 255));
+    EXPECT_FLOAT_EQ(back.bbox.max[0], 1.0f);
+}
+
+TEST(MeshIo, TheMeshesOfOneLodSetBecomeOneModel)
+{
+    CoreMesh level0, level1, other;
+    makeLevelMesh(level0, 0);
+    makeLevelMesh(level1, 1);
+    makeLevelMesh(other, 2);
+    LodLevel r0;
+    r0.setId = 3;
+    r0.switchIn = 10;
+    LodLevel r1 = r0;
+    r1.level = 1;
+    r1.switchOut = 10;
+    r1.switchIn = 100;
+    LodLevel r2;
+    r2.setId = 4;
+    r2.switchIn = 5;
+    lodLevelHandle(level1)() = r1;  // out of order on purpose
+    lodLevelHandle(level0)() = r0;
+    lodLevelHandle(other)() = r2;
+    std::vector<mesh_io::LodLayer<CoreMesh>> layers{{&level1, {"one"}}, {&other, {"other"}}, {&level0, {"zero"}}};
+    flt::LodModel model;
+    mesh_io::LevelStats stats;
+    std::string error;
+    ASSERT_TRUE(mesh_io::lodSetToModel(layers, 3, model, stats, error)) << error;
+    ASSERT_EQ(model.levels.size(), 2u);
+    EXPECT_EQ(model.levels[0].parts.at(0).name, "zero");
+    EXPECT_EQ(model.levels[1].parts.at(0).name, "one");
+    EXPECT_EQ(model.levels[1].switchIn, 100);
+
+    std::vector<mesh_io::LodLayer<CoreMesh>> noLevel0{{&level1, {"one"}}};
+    EXPECT_FALSE(mesh_io::lodSetToModel(noLevel0, 3, model, stats, error));
+    EXPECT_EQ(error, "LOD set 3: no layer holds level 0 (the original)");
+}
