@@ -8,6 +8,7 @@
 #include "vrml/instancing_budget.h"
 #include "vrml/node.h"
 #include "vrml/primitives.h"
+#include "vrml/traversal.h"
 
 #include <functional>
 #include <map>
@@ -59,9 +60,6 @@ struct EvalContext {
     InstancingBudget budget;
     std::string error;  // fatal: the scene would exceed the triangle limit
 };
-
-// VRML97 grouping nodes whose `children` are traversed as they are (Transform aside).
-bool isGroupNode97(const std::string& type);
 
 void evaluateVrml97(const std::vector<NodePtr>& roots, const Mat4& world, const Owner& owner, const std::string& path,
                     EvalContext& ctx);

@@ -4,6 +4,7 @@
 #include "vrml/evaluation.h"
 #include "vrml/primitives.h"
 #include "vrml/transform.h"
+#include "vrml/traversal.h"
 
 #include <set>
 
@@ -83,17 +84,13 @@ public:
         const std::string at = path + "/" + t;
         if (t == "Separator") {
             State saved = state;
-            traverseChildren(*node, saved, here, at, depth);
+            follow(*node, saved, here, at, depth);
         } else if (t == "TransformSeparator") {
             const Mat4 world = state.world;
-            traverseChildren(*node, state, here, at, depth);
+            follow(*node, state, here, at, depth);
             state.world = world;
-        } else if (t == "Group" || t == "WWWAnchor") {
-            traverseChildren(*node, state, here, at, depth);
-        } else if (t == "Switch") {
-            traverseSwitch(*node, state, here, at, depth);
-        } else if (t == "LOD") {
-            if (!node->children.empty()) traverse(node->children.front(), state, here, at, depth + 1);
+        } else if (t == "Group" || t == "WWWAnchor" || t == "Switch" || t == "LOD") {
+            follow(*node, state, here, at, depth);
         } else if (t == "WWWInline") {
             const FieldValue* name = node->field("name");
             ctx_.loadInline(name ? name->strings : std::vector<std::string>{}, node->where, state.world, here);
@@ -104,20 +101,13 @@ public:
     }
 
 private:
-    void traverseChildren(const Node& node, State& state, const Owner& owner, const std::string& path, int depth)
+    // The children vrml/traversal.h says a grouping node's evaluation follows, in the
+    // current state; each adds its index to `path` unless it is a Switch's or LOD's choice.
+    void follow(const Node& node, State& state, const Owner& owner, const std::string& path, int depth)
     {
-        for (size_t i = 0; i < node.children.size(); ++i)
-            traverse(node.children[i], state, owner, path + "[" + std::to_string(i) + "]", depth + 1);
-    }
-
-    void traverseSwitch(const Node& node, State& state, const Owner& owner, const std::string& path, int depth)
-    {
-        const int which = intField(node, "whichChild", -1);
-        if (which == -3) {
-            traverseChildren(node, state, owner, path, depth);
-        } else if (which >= 0 && size_t(which) < node.children.size()) {
-            traverse(node.children[size_t(which)], state, owner, path, depth + 1);
-        }
+        const TraversedChildren t = traversedChildren(node, true);
+        for (const ChildRef& c : t.children)
+            traverse(*c.node, state, owner, t.chosen ? path : path + "[" + std::to_string(c.index) + "]", depth + 1);
     }
 
     bool property(const Node& n, State& s)

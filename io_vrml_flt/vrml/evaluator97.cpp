@@ -3,6 +3,7 @@
 #include "vrml/evaluation.h"
 #include "vrml/primitives.h"
 #include "vrml/transform.h"
+#include "vrml/traversal.h"
 
 #include <set>
 
@@ -35,14 +36,6 @@ NodePtr nodeField(const Node& n, const char* name)
 {
     const FieldValue* v = nodesField(n, name);
     return v && !v->nodes.empty() ? v->nodes.front() : nullptr;
-}
-
-std::vector<NodePtr> childNodes(const Node& n, const char* name)
-{
-    std::vector<NodePtr> out;
-    if (const FieldValue* v = nodesField(n, name)) out = v->nodes;
-    out.insert(out.end(), n.children.begin(), n.children.end());
-    return out;
 }
 
 std::vector<std::string> stringsField(const Node& n, const char* name)
@@ -78,14 +71,9 @@ public:
         const std::string& type = node->type;
         if (type == "Transform" || type == "CADPart") {
             const Mat4 local = transformMatrix(readTransformFields(*node, "scale"));
-            traverseAll(childNodes(*node, "children"), world * local, here, path + "/" + type, depth);
-        } else if (isGroupNode97(type)) {
-            traverseAll(childNodes(*node, "children"), world, here, path + "/" + type, depth);
-        } else if (type == "Switch") {
-            traverseSwitch(*node, world, here, path, depth);
-        } else if (type == "LOD") {
-            std::vector<NodePtr> levels = childNodes(*node, nodesField(*node, "level") ? "level" : "children");
-            if (!levels.empty()) traverse(levels.front(), world, here, path + "/LOD", depth + 1);
+            follow(*node, world * local, here, path + "/" + type, depth);
+        } else if (isGroupNode97(type) || type == "Switch" || type == "LOD") {
+            follow(*node, world, here, path + "/" + type, depth);
         } else if (type == "Inline") {
             ctx_.loadInline(stringsField(*node, "url"), node->where, world, here);
         } else if (type == "Shape") {
@@ -96,19 +84,13 @@ public:
     }
 
 private:
-    void traverseAll(const std::vector<NodePtr>& nodes, const Mat4& world, const Owner& owner, const std::string& path,
-                     int depth)
+    // The children vrml/traversal.h says a grouping node's evaluation follows; `path` names
+    // the node, each child adds its index unless it is a Switch's or LOD's choice.
+    void follow(const Node& node, const Mat4& world, const Owner& owner, const std::string& path, int depth)
     {
-        for (size_t i = 0; i < nodes.size(); ++i)
-            traverse(nodes[i], world, owner, path + "[" + std::to_string(i) + "]", depth + 1);
-    }
-
-    void traverseSwitch(const Node& node, const Mat4& world, const Owner& owner, const std::string& path, int depth)
-    {
-        const int which = intField(node, "whichChoice", -1);
-        const std::vector<NodePtr> choices = childNodes(node, nodesField(node, "choice") ? "choice" : "children");
-        if (which >= 0 && size_t(which) < choices.size())
-            traverse(choices[size_t(which)], world, owner, path + "/Switch", depth + 1);
+        const TraversedChildren t = traversedChildren(node, false);
+        for (const ChildRef& c : t.children)
+            traverse(*c.node, world, owner, t.chosen ? path : path + "[" + std::to_string(c.index) + "]", depth + 1);
     }
 
     std::array<float, 4> materialColor(const Node& shape)
@@ -257,13 +239,6 @@ private:
 };
 
 }  // namespace
-
-bool isGroupNode97(const std::string& type)
-{
-    static const std::set<std::string> types{"Group", "Billboard", "Anchor", "Collision", "StaticGroup",
-                                             "CADAssembly", "CADLayer", "CADFace"};
-    return types.count(type) > 0;
-}
 
 void countShapeTriangles(const std::string& type, size_t before, const Part& part, SceneStats& stats)
 {

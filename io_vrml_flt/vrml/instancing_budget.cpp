@@ -3,6 +3,7 @@
 #include "vrml/evaluation.h"
 #include "vrml/primitives.h"
 #include "vrml/transform.h"
+#include "vrml/traversal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,69 +23,23 @@ struct Ref {
     const std::string* useWhere = nullptr;
 };
 
-const std::string* useSiteAt(const std::vector<UseSite>& sites, size_t index)
-{
-    const auto it = std::lower_bound(sites.begin(), sites.end(), index,
-                                     [](const UseSite& s, size_t i) { return s.index < i; });
-    return it != sites.end() && it->index == index ? &it->where : nullptr;
-}
-
-void appendRefs(const std::vector<NodePtr>& nodes, const std::vector<UseSite>& sites, std::vector<Ref>& out)
-{
-    for (size_t i = 0; i < nodes.size(); ++i)
-        if (nodes[i]) out.push_back({nodes[i].get(), useSiteAt(sites, i)});
-}
-
 const FieldValue* nodesField(const Node& n, const char* name)
 {
     const FieldValue* v = n.field(name);
     return v && v->kind == FieldValue::Kind::Nodes ? v : nullptr;
 }
 
-// The field's nodes, then the node's VRML 1.0-style children (as evaluator97's childNodes).
-std::vector<Ref> fieldAndChildRefs(const Node& n, const char* name)
+// The non-null entries of `refs` (NULL emits nothing).
+std::vector<Ref> nonNull(const std::vector<ChildRef>& refs)
 {
-    std::vector<Ref> refs;
-    if (const FieldValue* v = nodesField(n, name)) appendRefs(v->nodes, v->useSites, refs);
-    appendRefs(n.children, n.childUseSites, refs);
-    return refs;
+    std::vector<Ref> out;
+    for (const ChildRef& r : refs)
+        if (*r.node) out.push_back({r.node->get(), r.useWhere});
+    return out;
 }
 
-std::vector<Ref> only(std::vector<Ref> refs, int64_t index)
-{
-    if (index < 0 || size_t(index) >= refs.size()) return {};
-    return {refs[size_t(index)]};
-}
-
-// The references evaluator97 traverses below `n`.
-std::vector<Ref> children97(const Node& n)
-{
-    const std::string& t = n.type;
-    if (t == "Transform" || t == "CADPart" || isGroupNode97(t)) return fieldAndChildRefs(n, "children");
-    if (t == "Switch")
-        return only(fieldAndChildRefs(n, nodesField(n, "choice") ? "choice" : "children"),
-                    intField(n, "whichChoice", -1));
-    if (t == "LOD") return only(fieldAndChildRefs(n, nodesField(n, "level") ? "level" : "children"), 0);
-    return {};
-}
-
-// The references evaluator10 traverses below `n`.
-std::vector<Ref> children10(const Node& n)
-{
-    const std::string& t = n.type;
-    std::vector<Ref> refs;
-    if (t == "Separator" || t == "TransformSeparator" || t == "Group" || t == "WWWAnchor" || t == "Switch" ||
-        t == "LOD")
-        appendRefs(n.children, n.childUseSites, refs);
-    if (t == "Switch") {
-        const int32_t which = intField(n, "whichChild", -1);
-        return which == -3 ? refs : only(std::move(refs), which);
-    }
-    if (t == "LOD") return only(std::move(refs), 0);
-    return refs;
-}
-
-std::vector<Ref> children(const Node& n, bool vrml1) { return vrml1 ? children10(n) : children97(n); }
+// The references the evaluators follow below `n` (vrml/traversal.h).
+std::vector<Ref> children(const Node& n, bool vrml1) { return nonNull(traversedChildren(n, vrml1).children); }
 
 uint64_t faceSetTriangles(const std::vector<int32_t>* coordIndex)
 {
@@ -228,8 +183,7 @@ uint64_t InstancingBudget::computeAll(const Node& root, bool vrml1)
 std::string InstancingBudget::check(const std::vector<NodePtr>& nodes, const std::vector<UseSite>& useSites,
                                     bool vrml1, uint64_t used, uint64_t limit)
 {
-    std::vector<Ref> refs;
-    appendRefs(nodes, useSites, refs);
+    std::vector<Ref> refs = nonNull(writtenList(nodes, useSites));
     // Follow the reference that crosses the limit down to a USE (the expansion to blame)
     // or to a node that emits the triangles itself.
     std::optional<Ref> parent;
