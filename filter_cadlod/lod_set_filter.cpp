@@ -95,15 +95,28 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
         return false;
     }
     options.setId = nextSetId(md);
-    original.updateDataMask(MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK);
-    vcg::tri::Allocator<CMeshO>::CompactEveryVector(original.cm);
-    vcg::tri::UpdateTopology<CMeshO>::VertexFace(original.cm);
-
     const QString baseName = QFileInfo(original.label()).completeBaseName();
     std::vector<MeshModel*> layers;
+    // A layer that already belongs to a set (level 0 of an earlier run, or one of its
+    // levels) keeps its record: the new set starts from a copy of it, its own level 0.
+    MeshModel* level0 = &original;
+    if (hasLodLevel(original.cm)) {
+        level0 = md.addNewMesh("", QString("%1 LOD0").arg(baseName), false);
+        level0->updateDataMask(&original);
+        detail::copyWithParts(level0->cm, original.cm);
+        vcg::tri::UpdateBounding<CMeshO>::Box(level0->cm);
+        layers.push_back(level0);
+        plugin.Log("CAD LOD set: %s already belongs to LOD set %d; LOD set %d starts from a copy of it (%s)",
+                   qUtf8Printable(original.label()), lodLevelHandle(original.cm)().setId, options.setId,
+                   qUtf8Printable(level0->label()));
+    }
+    level0->updateDataMask(MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK);
+    vcg::tri::Allocator<CMeshO>::CompactEveryVector(level0->cm);
+    vcg::tri::UpdateTopology<CMeshO>::VertexFace(level0->cm);
+
     auto newLevel = [&](int k) -> CMeshO& {
         MeshModel* layer = md.addNewMesh("", QString("%1 LOD%2").arg(baseName).arg(k), false);
-        layer->updateDataMask(&original);
+        layer->updateDataMask(level0);
         layer->updateDataMask(MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK);
         layers.push_back(layer);
         return layer->cm;
@@ -111,16 +124,17 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
 
     QElapsedTimer timer;
     timer.start();
-    const LodSetResult result = buildLodSet<CMeshO>(original.cm, options, newLevel, cb);
+    const LodSetResult result = buildLodSet<CMeshO>(level0->cm, options, newLevel, cb);
     if (!result.ok()) {
         for (MeshModel* layer : layers)
             md.delMesh(layer);
         error = QString::fromStdString(result.error);
         return false;
     }
+    const std::size_t firstLevel = level0 == &original ? 0 : 1;  // layers[0] is the copy
     std::vector<MeshModel*> kept;
-    for (std::size_t i = 0; i < layers.size(); ++i) {
-        const int level = int(i) + 1;
+    for (std::size_t i = firstLevel; i < layers.size(); ++i) {
+        const int level = int(i - firstLevel) + 1;
         const auto& dropped = result.droppedLevels;
         if (std::find(dropped.begin(), dropped.end(), level) != dropped.end())
             md.delMesh(layers[i]);

@@ -4,6 +4,7 @@
 
 #include "core/compactness.h"
 #include "core/simplify.h"
+#include "layer_metadata.h"
 
 #include <vcg/complex/algorithms/clean.h>
 
@@ -71,6 +72,15 @@ bool cadSimplify(MeshFilterInterface& plugin, MeshModel& m, const RichParameterL
         plugin.Log("CAD Quadric Edge Collapse on %s: %s", qUtf8Printable(m.label()), s.message.c_str());
     if (par.getBool("autoClean"))
         cleanUp(plugin, m);
+    // A level of an LOD set simplified again no longer matches its record (faces, error,
+    // switch ranges): it leaves the set rather than be exported with stale ranges.
+    if (hasLodLevel(m.cm) && (s.collapses > 0 || m.cm.fn != s.facesBefore)) {
+        const LodLevel stale = lodLevelHandle(m.cm)();
+        clearLodLevel(m.cm);
+        plugin.Log("CAD Quadric Edge Collapse on %s: the layer was level %d of LOD set %d; simplified again, it "
+                   "leaves the set (its level record no longer matches it)",
+                   qUtf8Printable(m.label()), stale.level, stale.setId);
+    }
     m.UpdateBoxAndNormals();
     vcg::tri::UpdateNormal<CMeshO>::NormalizePerFace(m.cm);
     vcg::tri::UpdateNormal<CMeshO>::PerVertexFromCurrentFaceNormal(m.cm);

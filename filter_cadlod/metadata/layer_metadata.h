@@ -56,4 +56,13 @@ typename MeshType::template PerMeshAttributeHandle<LodLevel> lodLevelHandle(Mesh
     return vcg::tri::Allocator<MeshType>::template GetPerMeshAttribute<LodLevel>(m, kLodAttribute);
 }
 
+// Takes the mesh out of its LOD set: a level whose geometry changed (simplified again, ...)
+// no longer matches its record (faces, error, switch ranges).
+template <class MeshType>
+void clearLodLevel(MeshType& m)
+{
+    if (hasLodLevel(m))
+        vcg::tri::Allocator<MeshType>::DeletePerMeshAttribute(m, kLodAttribute);
+}
+
 }  // namespace cadlod

@@ -95,3 +95,63 @@ TEST(FltLodSet, CadAssemblyKeepsItsPartsInEveryLevel)
         EXPECT_LT(probe.lods[l].triangles.size(), probe.lods[l - 1].triangles.size());
     }
 }
+
+namespace {
+
+const char* const kSimplifyFilter = "Simplification: CAD Quadric Edge Collapse (compactness)";
+
+std::string currentLayer(int layer)
+{
+    return mlxFilter("Change the current layer", {mlxParam("RichMesh", "layer", std::to_string(layer))});
+}
+
+}  // namespace
+
+// A second LOD set built from a layer that already is level 0 of a set must leave that
+// set whole: it used to overwrite the layer's level record, so the first set lost its
+// level 0 and could no longer be exported ("no layer holds level 0").
+TEST(FltLodSet, SecondSetFromTheSameLayerLeavesTheFirstSetWhole)
+{
+    const std::string dir = scratchDir("flt_lod_set_twice");
+    TestMesh torus;
+    makeTorusMesh(torus);
+    ASSERT_TRUE(savePly(dir + "/torus.ply", torus, vcg::tri::io::Mask::IOM_VERTNORMAL));
+    // Layer 1 is the first set's level 1 whatever the second set adds after it.
+    writeText(dir + "/twice.mlx",
+              mlxScript({mlxFilter(kLodFilter, {mlxParam("RichString", "levels", "50")}),
+                         mlxFilter(kLodFilter, {mlxParam("RichString", "levels", "75")}), currentLayer(1)}));
+    const std::string flt = dir + "/first_set.flt";
+    const ServerRun run = runMeshlabServer({"-i", dir + "/torus.ply", "-s", dir + "/twice.mlx", "-o", flt}, 300);
+    ASSERT_TRUE(run.ok()) << run.output;
+    EXPECT_NE(run.output.find("2 LOD level(s)"), std::string::npos) << run.output;
+
+    const OsgProbe probe = probeWithOsg(flt);
+    ASSERT_TRUE(probe.loaded);
+    ASSERT_EQ(probe.lods.size(), 2u);
+    EXPECT_EQ(probe.lods[0].triangles.size(), std::size_t(torus.fn)) << "level 0 is the original";
+    EXPECT_NEAR(double(probe.lods[1].triangles.size()), 0.5 * torus.fn, 0.05 * torus.fn) << "the first set's 50 %";
+}
+
+// A level simplified again is no longer what its LOD record says (faces, error, ranges):
+// it must leave its set, so saving it writes that layer alone, not the stale set.
+TEST(FltLodSet, ALevelSimplifiedAgainLeavesItsSet)
+{
+    const std::string dir = scratchDir("flt_lod_set_resimplified");
+    TestMesh torus;
+    makeTorusMesh(torus);
+    ASSERT_TRUE(savePly(dir + "/torus.ply", torus, vcg::tri::io::Mask::IOM_VERTNORMAL));
+    const int target = torus.fn / 4;
+    writeText(dir + "/again.mlx",
+              mlxScript({mlxFilter(kLodFilter, {mlxParam("RichString", "levels", "50")}), currentLayer(1),
+                         mlxFilter(kSimplifyFilter, {mlxParam("RichInt", "targetFaces", std::to_string(target))})}));
+    const std::string flt = dir + "/level.flt";
+    const ServerRun run = runMeshlabServer({"-i", dir + "/torus.ply", "-s", dir + "/again.mlx", "-o", flt}, 300);
+    ASSERT_TRUE(run.ok()) << run.output;
+    EXPECT_NE(run.output.find("1 LOD level(s)"), std::string::npos) << run.output;
+
+    cadlod::flt::LodModel model;
+    std::string error;
+    ASSERT_TRUE(cadlod::flt::readOpenFlightFile(flt, model, error)) << error;
+    ASSERT_EQ(model.levels.size(), 1u);
+    EXPECT_NEAR(double(model.triangleCount()), target, 0.02 * torus.fn);
+}
