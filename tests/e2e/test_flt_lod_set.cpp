@@ -25,8 +25,8 @@ bool lodFilterAvailable()
 
 TEST(FltLodSet, WholeSetIsWrittenWithItsSwitchDistances)
 {
-    if (!lodFilterAvailable())
-        GTEST_SKIP() << "the filter \"" << kLodFilter << "\" is not in this build";
+    ASSERT_TRUE(lodFilterAvailable()) << "the staged meshlabserver does not list \"" << kLodFilter
+                                      << "\": the filter_cadlod plugin is missing or failed to load";
     const std::string dir = scratchDir("flt_lod_set");
     TestMesh torus;
     makeTorusMesh(torus);
@@ -67,8 +67,8 @@ TEST(FltLodSet, WholeSetIsWrittenWithItsSwitchDistances)
 // every LOD level keeps one named Object per CAD part.
 TEST(FltLodSet, CadAssemblyKeepsItsPartsInEveryLevel)
 {
-    if (!lodFilterAvailable())
-        GTEST_SKIP() << "the filter \"" << kLodFilter << "\" is not in this build";
+    ASSERT_TRUE(lodFilterAvailable()) << "the staged meshlabserver does not list \"" << kLodFilter
+                                      << "\": the filter_cadlod plugin is missing or failed to load";
     const std::string dir = scratchDir("flt_lod_set_assembly");
     writeText(dir + "/lods.mlx",
               mlxScript({mlxFilter(kLodFilter, {mlxParam("RichString", "levels", "50 80")})}));
@@ -112,6 +112,7 @@ std::string currentLayer(int layer)
 // level 0 and could no longer be exported ("no layer holds level 0").
 TEST(FltLodSet, SecondSetFromTheSameLayerLeavesTheFirstSetWhole)
 {
+    ASSERT_TRUE(lodFilterAvailable());
     const std::string dir = scratchDir("flt_lod_set_twice");
     TestMesh torus;
     makeTorusMesh(torus);
@@ -136,6 +137,7 @@ TEST(FltLodSet, SecondSetFromTheSameLayerLeavesTheFirstSetWhole)
 // it must leave its set, so saving it writes that layer alone, not the stale set.
 TEST(FltLodSet, ALevelSimplifiedAgainLeavesItsSet)
 {
+    ASSERT_TRUE(lodFilterAvailable());
     const std::string dir = scratchDir("flt_lod_set_resimplified");
     TestMesh torus;
     makeTorusMesh(torus);

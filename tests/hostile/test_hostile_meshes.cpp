@@ -7,6 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
 using namespace cadlod;
 using namespace cadlod::test;
 
@@ -40,6 +45,28 @@ SimplifyStats simplifyTo(TestMesh& m, int faces)
     return simplify(m, targetParams(faces));
 }
 
+// The live faces as corner positions, sorted: equal before and after when no face was
+// removed, moved or reshaped (vertex storage may be compacted in between).
+std::vector<std::array<float, 9>> faceCorners(const TestMesh& m)
+{
+    std::vector<std::array<float, 9>> out;
+    for (const auto& f : m.face) {
+        if (f.IsD()) continue;
+        std::array<float, 9> c{};
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k) c[size_t(3 * j + k)] = f.cP(j)[k];
+        out.push_back(c);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::string stoppedAbove(int faces, int target)
+{
+    return "stopped at " + std::to_string(faces) + " faces, above the target of " + std::to_string(target) +
+           ": the remaining collapses would break a feature, the topology, the error bound or the face shape limits";
+}
+
 }  // namespace
 
 // Two cones touching at one apex: the apex is a non-manifold vertex (two fans).
@@ -67,10 +94,16 @@ TEST(HostileMeshes, ZeroAreaFacesOnly)
         auto a = addVertex(m, float(i), 0, 0), b = addVertex(m, float(i) + 1, 0, 0), c = addVertex(m, float(i) + 2, 0, 0);
         Alloc::AddFace(m, a, b, c);
     }
+    const auto before = faceCorners(m);
     const SimplifyStats s = simplifyTo(m, 5);
     expectValidMesh(m);
-    EXPECT_TRUE(s.ok) << s.message;
-    EXPECT_LE(m.fn, 20);
+    ASSERT_TRUE(s.ok) << s.message;
+    // Each face is an island of three boundary edges and has no area to lose: none may be
+    // removed or moved, and the simplifier says why it stopped above the target.
+    EXPECT_EQ(s.boundaryEdges, 3 * 20);
+    EXPECT_EQ(s.collapses, 0);
+    EXPECT_EQ(faceCorners(m), before);
+    EXPECT_EQ(s.message, stoppedAbove(20, 5));
 }
 
 TEST(HostileMeshes, DuplicatedFacesAreNotMadeWorse)
@@ -83,14 +116,16 @@ TEST(HostileMeshes, DuplicatedFacesAreNotMadeWorse)
         auto& f = m.face[size_t(i)];
         Alloc::AddFace(m, f.V(0), f.V(1), f.V(2));
     }
+    const auto before = faceCorners(m);
     const SimplifyStats s = simplifyTo(m, single / 2);
     ASSERT_TRUE(s.ok) << s.message;
     expectValidMesh(m);
-    EXPECT_GT(s.nonManifoldEdges, 0);  // every edge has four faces: all locked
-    EXPECT_LE(m.fn, 2 * single);
-    if (m.fn > single / 2) {
-        EXPECT_FALSE(s.message.empty());
-    }
+    // Every edge has four faces: all non-manifold, every vertex locked. Collapsing any of
+    // them would tear one copy from its twin, so the mesh must come back as it was.
+    EXPECT_EQ(s.nonManifoldEdges, 3 * single / 2);
+    EXPECT_EQ(s.collapses, 0);
+    EXPECT_EQ(faceCorners(m), before);
+    EXPECT_EQ(s.message, stoppedAbove(2 * single, single / 2));
 }
 
 TEST(HostileMeshes, CoincidentUnweldedVerticesKeepTheSeamsClosed)
@@ -105,12 +140,17 @@ TEST(HostileMeshes, CoincidentUnweldedVerticesKeepTheSeamsClosed)
         auto c = addVertex(soup, f.cP(2)[0], f.cP(2)[1], f.cP(2)[2]);
         Alloc::AddFace(soup, a, b, c);
     }
+    const auto welded = faceCorners(m);
     const SimplifyStats s = simplifyTo(soup, soup.fn / 4);
     expectValidMesh(soup);
     ASSERT_TRUE(s.ok) << s.message;
     // Every triangle is an island with three boundary edges: nothing may move them apart.
+    // Every face stays, with every corner where it was, so corners that coincided across a
+    // seam still coincide: the seams stay closed.
     EXPECT_EQ(s.boundaryEdges, 3 * m.fn);
-    EXPECT_LE(soup.fn, m.fn);
+    EXPECT_EQ(soup.fn, m.fn);
+    EXPECT_EQ(faceCorners(soup), welded);
+    EXPECT_EQ(s.message, stoppedAbove(m.fn, m.fn / 4));
 }
 
 TEST(HostileMeshes, OneAndTwoFaces)
@@ -120,13 +160,31 @@ TEST(HostileMeshes, OneAndTwoFaces)
         auto a = addVertex(m, 0, 0, 0), b = addVertex(m, 1, 0, 0), c = addVertex(m, 0, 1, 0), d = addVertex(m, 1, 1, 0);
         Alloc::AddFace(m, a, b, c);
         if (faces == 2) Alloc::AddFace(m, b, d, c);
+        const auto before = faceCorners(m);
         const SimplifyStats s = simplifyTo(m, 1);
         expectValidMesh(m);
-        EXPECT_TRUE(s.ok) << s.message;
-        EXPECT_GE(m.fn, 1);
-        EXPECT_LE(m.fn, faces);
-        if (faces == 1) {
+        ASSERT_TRUE(s.ok) << s.message;
+        if (faces == 1) {  // nothing to do: the face comes back as it was
             EXPECT_EQ(s.message, "target of 1 faces is not below the 1 faces of the mesh: nothing to do");
+            EXPECT_EQ(s.collapses, 0);
+            EXPECT_EQ(faceCorners(m), before);
+            continue;
+        }
+        // Two faces, target 1: one collapse gives one proper triangle on the input's
+        // corners (no corner moved elsewhere, no zero-area or vanished face).
+        EXPECT_EQ(s.message, "");
+        EXPECT_EQ(s.collapses, 1);
+        ASSERT_EQ(m.fn, 1);
+        const auto after = faceCorners(m);
+        ASSERT_EQ(after.size(), 1u);
+        for (int j = 0; j < 3; ++j) {
+            const vcg::Point3f p(after[0][size_t(3 * j)], after[0][size_t(3 * j + 1)], after[0][size_t(3 * j + 2)]);
+            EXPECT_TRUE(p == a->P() || p == b->P() || p == c->P() || p == d->P()) << "corner " << j;
+        }
+        for (const auto& f : m.face) {
+            if (!f.IsD()) {
+                EXPECT_GT(vcg::DoubleArea(f), 0.0f);
+            }
         }
     }
 }

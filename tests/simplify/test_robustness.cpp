@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <limits>
 
 using namespace cadlod;
@@ -105,16 +106,43 @@ TEST(SimplifyRobustness, DuplicateVerticesZeroAreaFacesIsolatedAndNonFiniteVerti
                 vcg::Point3f(2, 1, 1));
     // Repeated vertex reference (a face using one vertex twice).
     vcg::tri::Allocator<TestMesh>::AddFace(m, &m.vert[0], &m.vert[0], &m.vert[1]);
+    // Remember which vertices came in not finite, and where: only they may be non-finite
+    // afterwards, and they must not have moved (a collapse onto them would spread NaN/inf).
+    auto isFinite = [](const vcg::Point3f& p) {
+        return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+    };
+    auto input = vcg::tri::Allocator<TestMesh>::GetPerVertexAttribute<vcg::Point3f>(m, "input_position");
+    int nonFiniteIn = 0;
+    for (auto& v : m.vert) {
+        input[v] = v.P();
+        nonFiniteIn += !isFinite(v.P());
+    }
+    ASSERT_EQ(nonFiniteIn, 2);
     const int before = m.fn;
     const SimplifyStats s = simplify(m, targetParams(before / 3));
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_GE(s.degenerateFaces, 1);
     EXPECT_LT(m.fn, before);
     EXPECT_TRUE(std::isfinite(s.largestError));
-    for (const auto& f : m.face)
-        if (!f.IsD() && f.cV(0) != f.cV(1))
-            for (int j = 0; j < 3; ++j)
-                if (f.cV(j) != &m.vert[0] && std::isfinite(f.cP(j)[0])) {
-                    EXPECT_TRUE(std::isfinite(f.cP(j)[1]) && std::isfinite(f.cP(j)[2]));
-                }
+    int nonFiniteOut = 0, checked = 0;
+    for (auto& v : m.vert) {
+        if (v.IsD()) continue;
+        const vcg::Point3f in = input[v];
+        if (!isFinite(in)) {
+            ++nonFiniteOut;
+            for (int k = 0; k < 3; ++k)  // the same bits: NaN stays NaN, inf stays inf
+                EXPECT_EQ(std::memcmp(&v.cP()[k], &in[k], sizeof(float)), 0) << "vertex " << (&v - &m.vert[0]);
+            continue;
+        }
+        ++checked;
+        EXPECT_TRUE(isFinite(v.cP())) << "vertex " << (&v - &m.vert[0]) << " came in finite";
+    }
+    EXPECT_EQ(nonFiniteOut, 2) << "the non-finite vertices stay (locked), no new one appears";
+    EXPECT_GT(checked, 0);
+    for (const auto& f : m.face) {
+        if (f.IsD()) continue;
+        for (int j = 0; j < 3; ++j) {
+            EXPECT_FALSE(f.cV(j)->IsD());
+        }
+    }
 }

@@ -57,15 +57,18 @@ TEST(SimplifyStop, MaxErrorIsHonoured)
     p.maxError = 1e-3;
     const SimplifyStats s = simplify(m, p);
     ASSERT_TRUE(s.ok) << s.message;
-    EXPECT_LT(m.fn, original.fn / 2);      // it did simplify ...
-    EXPECT_LE(s.largestErrorFraction(), p.maxError);  // ... within the bound
+    EXPECT_LT(m.fn, original.fn / 2);  // it did simplify ...
+    // ... within the bound, measured independently of the simplifier's own error estimate:
+    // the symmetric Hausdorff distance to the original. The bound is on the RMS distance to
+    // the planes a collapse replaces, so the true maximum may exceed it a little.
     const SymmetricHausdorff h = symmetricHausdorff(original, m, 20000);
-    EXPECT_LE(h.maxFraction(), 4 * p.maxError);  // RMS bound, so the true max is close
+    EXPECT_LE(h.maxFraction(), 4 * p.maxError);
 
-    // A tighter bound stops earlier.
+    // A tighter bound stops earlier, and is honoured too.
     TestMesh tight;
     copyMesh(tight, original);
     p.maxError = 1e-5;
-    simplify(tight, p);
+    ASSERT_TRUE(simplify(tight, p).ok);
     EXPECT_GT(tight.fn, m.fn);
+    EXPECT_LE(symmetricHausdorff(original, tight, 20000).maxFraction(), 4 * p.maxError);
 }
