@@ -159,51 +159,6 @@ TEST(Reader, ZeroLengthAndForeignFilesAreErrors)
     EXPECT_FALSE(error.empty());
 }
 
-TEST(Reader, UnbalancedPushPopIsAnError)
-{
-    Bytes b = writeBytes(singleLevelModel(1));
-    Bytes extraPop = b;
-    extraPop.insert(extraPop.end(), {0, 11, 0, 4});
-    LodModel m;
-    std::string error;
-    EXPECT_FALSE(readBytes(extraPop, m, error));
-    EXPECT_NE(error.find("Pop record at offset " + std::to_string(b.size())), std::string::npos) << error;
-
-    Bytes extraPush = b;
-    extraPush.insert(extraPush.end(), {0, 10, 0, 4});
-    EXPECT_FALSE(readBytes(extraPush, m, error));
-    EXPECT_NE(error.find("unbalanced"), std::string::npos) << error;
-}
-
-TEST(Reader, ZeroLengthRecordIsAnErrorNotAHang)
-{
-    Bytes b = writeBytes(singleLevelModel(1));
-    const auto spans = recordSpans(b);
-    const std::size_t at = spans[3].offset;
-    b[at + 2] = 0;
-    b[at + 3] = 0;
-    LodModel m;
-    std::string error;
-    EXPECT_FALSE(readBytes(b, m, error));
-    EXPECT_NE(error.find("offset " + std::to_string(at)), std::string::npos) << error;
-}
-
-TEST(Reader, HugeVertexCountIsAnErrorNotAnAllocation)
-{
-    Bytes b = writeBytes(singleLevelModel(1));
-    for (const auto& s : recordSpans(b))
-        if (s.opcode == 85) {
-            b[s.offset + 4] = 0x7f;  // ~2 billion vertices
-            LodModel m;
-            std::string error;
-            EXPECT_FALSE(readBytes(b, m, error));
-            EXPECT_NE(error.find("Local Vertex Pool at offset " + std::to_string(s.offset)), std::string::npos)
-                << error;
-            return;
-        }
-    FAIL() << "no Local Vertex Pool written";
-}
-
 TEST(Reader, FacesOutsideThePaletteAreSkippedAndCounted)
 {
     WriteOptions o;

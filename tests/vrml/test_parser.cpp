@@ -87,27 +87,6 @@ Group {}
     EXPECT_EQ(diag.total(), 0);
 }
 
-TEST(VrmlParser, TruncatedFileKeepsWhatWasReadAndWarnsWithLocation)
-{
-    Diagnostics diag;
-    const ParsedFile f = parse("#VRML V2.0 utf8\nGroup {}\nShape { geometry IndexedFaceSet { coordIndex [ 0 1 2", diag);
-    ASSERT_EQ(f.roots.size(), 2u);
-    EXPECT_EQ(diag.count("syntax error"), 1);
-    ASSERT_FALSE(diag.kept().empty());
-    EXPECT_NE(diag.kept()[0].where.find("p.wrl:3:"), std::string::npos);
-    EXPECT_NE(diag.kept()[0].message.find("truncated"), std::string::npos);
-}
-
-TEST(VrmlParser, DeepNestingStopsWithAWarning)
-{
-    std::string text = "#VRML V2.0 utf8\n";
-    for (int i = 0; i < 100000; ++i) text += "Group { children ";
-    Diagnostics diag;
-    const ParsedFile f = parse(text, diag);
-    EXPECT_EQ(diag.count("syntax error"), 1);
-    EXPECT_NE(diag.kept()[0].message.find("nesting deeper"), std::string::npos);
-}
-
 TEST(VrmlParser, ProtoInstanceBecomesItsBodyWithIsFieldsSubstituted)
 {
     Diagnostics diag;
