@@ -3,7 +3,7 @@
 // from switchOut(k) (near) to switchIn(k) (far), and switchIn(k) == switchOut(k+1).
 #pragma once
 
-#include "layer_metadata.h"
+#include "lod_level.h"
 
 #include <algorithm>
 #include <cmath>
