@@ -57,6 +57,18 @@ void prependNull(const NodePtr& root, const char* field)
 
 const char* kBox97 = "Shape { geometry Box {} }";
 
+// `text` with a NULL put first in its root's node list `field`: evaluation emits `emitted`
+// triangles and the budget counts as many.
+void expectNullFirstCounted(const std::string& text, const char* field, bool vrml1, size_t emitted)
+{
+    const std::vector<NodePtr> roots = parse(text);
+    ASSERT_FALSE(roots.empty()) << text;
+    prependNull(roots.front(), field);
+    const Counted c = count(roots, vrml1);
+    EXPECT_EQ(c.emitted, emitted) << text;
+    EXPECT_EQ(c.budget, c.emitted) << text;
+}
+
 }  // namespace
 
 TEST(TraversalRules, Vrml97GroupsSwitchesAndLodsCountWhatIsEvaluated)
@@ -86,30 +98,15 @@ TEST(TraversalRules, Vrml1SeparatorsSwitchesAndLodsCountWhatIsEvaluated)
 
 TEST(TraversalRules, NullEntryBeforeTheChosenSwitchChoiceIsCountedAsEvaluated)
 {
-    std::vector<NodePtr> roots = parse(std::string("#VRML V2.0 utf8\nSwitch { whichChoice 1 choice [ ") + kBox97 + " ] }");
-    prependNull(roots.at(0), "choice");  // choice [ NULL, box ]: whichChoice 1 is the box
-    const Counted c = count(roots, false);
-    EXPECT_EQ(c.emitted, 12u);
-    EXPECT_EQ(c.budget, c.emitted);
-
-    std::vector<NodePtr> roots1 = parse("#VRML V1.0 ascii\nSwitch { whichChild 1 Cube {} }");
-    prependNull(roots1.at(0), "");
-    const Counted c1 = count(roots1, true);
-    EXPECT_EQ(c1.emitted, 12u);
-    EXPECT_EQ(c1.budget, c1.emitted);
+    // choice [ NULL, box ] with whichChoice 1: the box is evaluated, and counted.
+    expectNullFirstCounted(std::string("#VRML V2.0 utf8\nSwitch { whichChoice 1 choice [ ") + kBox97 + " ] }",
+                           "choice", false, 12);
+    expectNullFirstCounted("#VRML V1.0 ascii\nSwitch { whichChild 1 Cube {} }", "", true, 12);
 }
 
 TEST(TraversalRules, LodWhoseFirstLevelIsNullCountsNothing)
 {
-    std::vector<NodePtr> roots = parse(std::string("#VRML V2.0 utf8\nLOD { level [ ") + kBox97 + " ] }");
-    prependNull(roots.at(0), "level");  // level [ NULL, box ]: nothing is shown up close
-    const Counted c = count(roots, false);
-    EXPECT_EQ(c.emitted, 0u);
-    EXPECT_EQ(c.budget, c.emitted);
-
-    std::vector<NodePtr> roots1 = parse("#VRML V1.0 ascii\nLOD { Cube {} }");
-    prependNull(roots1.at(0), "");
-    const Counted c1 = count(roots1, true);
-    EXPECT_EQ(c1.emitted, 0u);
-    EXPECT_EQ(c1.budget, c1.emitted);
+    // level [ NULL, box ]: nothing is shown up close, nothing is evaluated or counted.
+    expectNullFirstCounted(std::string("#VRML V2.0 utf8\nLOD { level [ ") + kBox97 + " ] }", "level", false, 0);
+    expectNullFirstCounted("#VRML V1.0 ascii\nLOD { Cube {} }", "", true, 0);
 }
