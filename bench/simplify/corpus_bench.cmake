@@ -3,6 +3,6 @@
 add_executable(corpus_bench corpus_bench.cpp)
 target_include_directories(corpus_bench PRIVATE
   "${CMAKE_SOURCE_DIR}/tests/simplify" "${CMAKE_SOURCE_DIR}/tests/support")
-target_link_libraries(corpus_bench PRIVATE cadlod::mesh_core cadlod::shading CGAL::CGAL "${MESHOPTIMIZER_LIBRARY}")
+target_link_libraries(corpus_bench PRIVATE cadlod::simplify cadlod::shading CGAL::CGAL "${MESHOPTIMIZER_LIBRARY}")
 target_compile_definitions(corpus_bench PRIVATE CADLOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 target_compile_options(corpus_bench PRIVATE -Wall -Wextra)
