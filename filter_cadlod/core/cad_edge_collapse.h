@@ -78,6 +78,8 @@ struct CollapseContext : public vcg::BaseParameterClass {
     double maxErrorAbs = 0.0;     // 0: unbounded
     double cosNormalLimit = -1.0;
     double largestError = 0.0;    // over executed collapses
+    double largestFeatureBreak = 0.0;  // largest error of an executed collapse that broke a feature
+    bool shapeGuards = true;      // minCompactness and the free-sliver guard apply (relaxed last)
     typename vcg::LocalOptimization<MeshType>::HeapType* heap = nullptr;  // for re-queued entries
     std::vector<RingFace> ring;   // scratch of the edge being evaluated
     std::vector<int> ringChangedAt;  // per vertex: GlobalMark when a face around it last changed
@@ -102,6 +104,17 @@ struct CollapseContext : public vcg::BaseParameterClass {
             if (len > 0 && std::isfinite(len))
                 inputNormal[i] = vcg::Point3f::Construct(n / len);
         }
+    }
+
+    // Priority of an operation: its quadric cost (the weighted sum of squared distances to
+    // the merged planes, not their mean: a vertex that stands for many planes weighs more),
+    // plus the flat floor that keeps free collapses ordered (smallest merged weight, best
+    // shape first) instead of tied at ~0. `shape` in (0, 1]: 1 for well-shaped results.
+    // Both terms are normalised by the bbox diagonal, so the order is scale-free.
+    double priority(double cost, double area, double shape) const
+    {
+        const double diag2 = diagonal * diagonal;
+        return (cost / diag2 + flatError2 * area / (diag2 * shape)) / diag2;
     }
 
     // No face has changed yet.
@@ -206,6 +219,10 @@ public:
         for (VertexType* x : featureApex)
             markEdge(ctx, v1, x);
         ctx.largestError = std::max(ctx.largestError, double(error_));
+        if (breaksFeature_) {
+            ++ctx.stats->featureBreaks;
+            ctx.largestFeatureBreak = std::max(ctx.largestFeatureBreak, double(error_));
+        }
     }
 
     // The surviving vertex's edges are pushed again (its quadric changed), and so are the
@@ -314,6 +331,7 @@ private:
     // endpoints and the edge lie on features, the worst compactness of all of them.
     struct Neighbourhood {
         bool v0OnFeature = false, v1OnFeature = false, edgeIsFeature = false;
+        bool v0Corner = false, v1Corner = false;  // on other than exactly two feature edges
         double worstCompactness = 1.0;
     };
 
@@ -325,6 +343,18 @@ private:
             VertexType* v = side == 0 ? v0 : v1;
             VertexType* other = side == 0 ? v1 : v0;
             bool onFeature = false;
+            VertexType* featureEnds[2] = {nullptr, nullptr};
+            bool corner = false;
+            auto addFeatureEnd = [&](VertexType* x) {
+                if (x == featureEnds[0] || x == featureEnds[1])
+                    return;
+                if (!featureEnds[0])
+                    featureEnds[0] = x;
+                else if (!featureEnds[1])
+                    featureEnds[1] = x;
+                else
+                    corner = true;  // a third feature edge
+            };
             for (VFIterator vfi(v); !vfi.End(); ++vfi) {
                 FaceType* f = vfi.F();
                 const int z = vfi.I();
@@ -333,6 +363,10 @@ private:
                 const bool featureA = f->IsUserBit(ctx.bits.edge[z]);
                 const bool featureB = f->IsUserBit(ctx.bits.edge[(z + 2) % 3]);
                 onFeature |= featureA || featureB;
+                if (featureA)
+                    addFeatureEnd(a);
+                if (featureB)
+                    addFeatureEnd(b);
                 if (a == other || b == other) {
                     n.edgeIsFeature |= a == other ? featureA : featureB;
                     if (side == 0)  // shared faces are seen from both sides
@@ -351,6 +385,7 @@ private:
                 }
             }
             (side == 0 ? n.v0OnFeature : n.v1OnFeature) = onFeature;
+            (side == 0 ? n.v0Corner : n.v1Corner) = onFeature && (corner || !featureEnds[1]);
         }
         return n;
     }
@@ -389,42 +424,40 @@ private:
 
     struct Candidate {
         vcg::Point3d p;
-        double cost;
-        bool onlyIfFlat;  // allowed only if it costs no more than the flat floor
+        double cost;      // quadric cost: the geometric error the placement makes
+        bool breaks;      // moves a feature point off its feature (see evaluate)
+        double ranked;    // the cost it is ordered by: cost, times the feature penalty if it breaks
     };
     static constexpr int kMaxCandidates = 32;
     static constexpr double kSliver = 0.1;  // compactness below which a face counts as a sliver
 
     // Both endpoints, evenly spaced interior points and the quadric optimum (if well
-    // conditioned and near the edge), with their costs. A fixed endpoint keeps its place.
+    // conditioned and near the edge), with their costs. A placement breaks a feature when it
+    // moves a pinned endpoint, or puts a vertex that must stay on a boundary polyline (it
+    // may take the other endpoint's place) between the two; evaluate() lets it off when it
+    // costs no more than the flat floor (it lies on the feature already).
     static int candidates(const Context& ctx, const Quadric& q, const vcg::Point3d& p0, const vcg::Point3d& p1,
-                          bool v0Fixed, bool v1Fixed, Candidate* cand)
+                          bool v0Pinned, bool v1Pinned, bool onBoundaryLine, Candidate* cand)
     {
         int count = 0;
         const int interior = std::clamp(ctx.params.candidatesPerEdge, 0, kMaxCandidates - 4);
-        const bool between = v0Fixed || v1Fixed;
-        cand[count++] = {p0, 0.0, v1Fixed && !v0Fixed};
-        cand[count++] = {p1, 0.0, v0Fixed && !v1Fixed};
+        const bool between = v0Pinned || v1Pinned || onBoundaryLine;
+        cand[count++] = {p0, 0.0, v1Pinned, 0.0};
+        cand[count++] = {p1, 0.0, v0Pinned, 0.0};
         for (int i = 1; i <= interior; ++i)
-            cand[count++] = {p0 + (p1 - p0) * (double(i) / (interior + 1)), 0.0, between};
+            cand[count++] = {p0 + (p1 - p0) * (double(i) / (interior + 1)), 0.0, between, 0.0};
         vcg::Point3d optimum(0, 0, 0);
         if (ctx.params.optimalPlacement && quadricMinimum(q, optimum) &&
             vcg::Distance(optimum, (p0 + p1) * 0.5) <= vcg::Distance(p0, p1))
-            cand[count++] = {optimum, 0.0, between};
+            cand[count++] = {optimum, 0.0, between, 0.0};
         for (int i = 0; i < count; ++i)
             cand[i].cost = applyQuadric(q, cand[i].p);
         return count;
     }
 
-    // Priority of a collapse: the quadric cost (the weighted sum of squared distances to the
-    // merged planes, not their mean: a vertex that stands for many planes weighs more),
-    // plus the flat floor that keeps free collapses ordered (smallest merged weight, best
-    // shape first) instead of tied at ~0. `shape` in (0, 1]: 1 for well-shaped results.
-    // Both terms are normalised by the bbox diagonal, so the order is scale-free.
     static ScalarType priorityOf(const Context& ctx, double cost, double area, double shape)
     {
-        const double diag2 = ctx.diagonal * ctx.diagonal;
-        return ScalarType((cost / diag2 + ctx.flatError2 * area / (diag2 * shape)) / diag2);
+        return ScalarType(ctx.priority(cost, area, shape));
     }
 
     Quadric mergedQuadric(const Context& ctx) const
@@ -435,7 +468,7 @@ private:
     }
 
     // Never above the priority evaluate() finds: the cheapest of all candidates (evaluate
-    // may refuse some, never adds any) and the best shape.
+    // may refuse some or rank them higher, never lower) and the best shape.
     ScalarType lowerBound(const Context& ctx)
     {
         VertexType* v0 = this->pos.V(0);
@@ -445,11 +478,35 @@ private:
         const Quadric q = mergedQuadric(ctx);
         Candidate cand[kMaxCandidates];
         const int count = candidates(ctx, q, vcg::Point3d::Construct(v0->cP()), vcg::Point3d::Construct(v1->cP()),
-                                     false, false, cand);
+                                     false, false, false, cand);
         double minCost = std::numeric_limits<double>::max();
         for (int i = 0; i < count; ++i)
             minCost = std::min(minCost, cand[i].cost);
         return priorityOf(ctx, minCost, ctx.quadrics.area(v0) + ctx.quadrics.area(v1), 1.0);
+    }
+
+    // The candidates a collapse may use, ranked. Features are not locks but prices: a
+    // placement that breaks one (cuts across a crease, moves a corner or a boundary vertex
+    // off its place) is ranked at featurePenalty times its quadric cost, which already holds
+    // the feature's constraint planes. So a feature gives way only where every collapse that
+    // keeps the features costs that many times more error: a board keeps its corners while
+    // any small part can still lose a chamfer. featurePenalty 0 makes features hard locks.
+    int rankedCandidates(const Context& ctx, const Quadric& q, const vcg::Point3d& p0, const vcg::Point3d& p1,
+                         bool v0Pinned, bool v1Pinned, bool onBoundaryLine, bool crossesFeature, double flatFloor,
+                         Candidate* cand) const
+    {
+        const double penalty = ctx.params.featurePenalty;
+        int count = candidates(ctx, q, p0, p1, v0Pinned, v1Pinned, onBoundaryLine, cand);
+        int kept = 0;
+        for (int i = 0; i < count; ++i) {
+            Candidate c = cand[i];
+            c.breaks = crossesFeature || (c.breaks && c.cost > flatFloor);
+            if (c.breaks && penalty <= 0)
+                continue;
+            c.ranked = c.breaks ? c.cost * std::max(1.0, penalty) : c.cost;
+            cand[kept++] = c;
+        }
+        return kept;
     }
 
     void evaluate(Context& ctx)
@@ -457,66 +514,67 @@ private:
         evaluated_ = true;
         evaluatedAt_ = this->GlobalMark();
         feasible_ = true;
+        breaksFeature_ = false;
         VertexType* v0 = this->pos.V(0);
         VertexType* v1 = this->pos.V(1);
         SimplifyStats& stats = *ctx.stats;
         if (v0->IsUserBit(ctx.bits.locked) || v1->IsUserBit(ctx.bits.locked))
             return reject(stats.rejectedFeature);
         const Neighbourhood n = gatherRing(ctx, v0, v1);
-        if (n.v0OnFeature && n.v1OnFeature && !n.edgeIsFeature)
-            return reject(stats.rejectedFeature);  // would cut across a feature
         if (ctx.ring.empty())
             return reject(stats.rejectedTopology);  // would delete a whole component
 
         const Quadric q = mergedQuadric(ctx);
         const double area = ctx.quadrics.area(v0) + ctx.quadrics.area(v1);
-        // A vertex on a boundary keeps its place (or takes the other boundary vertex's), and
-        // so does a crease vertex when the edge leaves the crease: other candidates must cost
-        // no more than the flat floor, i.e. lie on the feature already. Along a crease the
+        // A corner (a crease end, or where creases meet) keeps its place, and so does any
+        // feature vertex when the edge leaves its feature: it is pinned. Along a crease the
         // new vertex may move (interior points, the optimum): the crease's constraint planes
         // hold it on the crease, and it can cut the chord error of a curved crease in half.
-        const bool v0Fixed = n.v0OnFeature && (!n.edgeIsFeature || v0->IsUserBit(ctx.bits.boundary));
-        const bool v1Fixed = n.v1OnFeature && (!n.edgeIsFeature || v1->IsUserBit(ctx.bits.boundary));
-        Candidate cand[kMaxCandidates];
-        int count = candidates(ctx, q, vcg::Point3d::Construct(v0->cP()), vcg::Point3d::Construct(v1->cP()),
-                               v0Fixed, v1Fixed, cand);
+        // Along a boundary a vertex may only take the other endpoint's place. An edge between
+        // two feature vertices that is no feature itself cuts across.
+        const bool crosses = n.v0OnFeature && n.v1OnFeature && !n.edgeIsFeature;
+        const bool v0Pinned = n.v0OnFeature && (!n.edgeIsFeature || n.v0Corner);
+        const bool v1Pinned = n.v1OnFeature && (!n.edgeIsFeature || n.v1Corner);
+        const bool onBoundaryLine =
+            n.edgeIsFeature && (v0->IsUserBit(ctx.bits.boundary) || v1->IsUserBit(ctx.bits.boundary));
         const double flatFloor = area * ctx.flatError2;
-        double minCost = std::numeric_limits<double>::max();
-        int kept = 0;
-        for (int i = 0; i < count; ++i) {
-            if (cand[i].onlyIfFlat && cand[i].cost > flatFloor)
-                continue;
-            cand[kept++] = cand[i];
-            minCost = std::min(minCost, cand[i].cost);
-        }
-        count = kept;
-        const double tieLimit = minCost * (1.0 + ctx.params.tieTolerance) + flatFloor;
+        Candidate cand[kMaxCandidates];
+        const int count = rankedCandidates(ctx, q, vcg::Point3d::Construct(v0->cP()), vcg::Point3d::Construct(v1->cP()),
+                                           v0Pinned, v1Pinned, onBoundaryLine, crosses, flatFloor, cand);
+        if (count == 0)
+            return reject(stats.rejectedFeature);
+        double minRanked = std::numeric_limits<double>::max();
+        for (int i = 0; i < count; ++i)
+            minRanked = std::min(minRanked, cand[i].ranked);
+        const double tieLimit = minRanked * (1.0 + ctx.params.tieTolerance) + flatFloor;
 
         // No new face below minCompactness, unless it is still better than the worst now.
         // A collapse that costs nothing must not make a sliver either: any later collapse
         // can do its work, and a sliver made for free is shape lost for nothing (the rings
-        // shaft at half: 61 % -> 30 % slivers, stock 57 %).
-        const double floor = std::min(ctx.params.minCompactness, n.worstCompactness);
-        const double minFree = ctx.params.minCompactness > 0 ? std::max(kSliver, ctx.params.minCompactness) : 0.0;
+        // shaft at half: 61 % -> 30 % slivers, stock 57 %). Both guards give way when the
+        // simplifier relaxes its shape limits (simplify.h).
+        const double minCompactness = ctx.shapeGuards ? ctx.params.minCompactness : 0.0;
+        const double floor = std::min(minCompactness, n.worstCompactness);
+        const double minFree = minCompactness > 0 ? std::max(kSliver, minCompactness) : 0.0;
         const double freeFloor = std::min(minFree, n.worstCompactness);
         auto floorFor = [&](const Candidate& c) { return c.cost <= flatFloor ? freeFloor : floor; };
         int best = -1;
         PlacementScore bestScore;
         bool anyFlip = false;
         for (int i = 0; i < count; ++i) {
-            if (cand[i].cost > tieLimit)
+            if (cand[i].ranked > tieLimit)
                 continue;
             const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]));
             anyFlip |= s.flipped;
             if (s.valid && (best < 0 || s.meanCompactness > bestScore.meanCompactness ||
-                            (s.meanCompactness == bestScore.meanCompactness && cand[i].cost < cand[best].cost))) {
+                            (s.meanCompactness == bestScore.meanCompactness && cand[i].ranked < cand[best].ranked))) {
                 best = i;
                 bestScore = s;
             }
         }
         if (best < 0)  // no tied candidate is acceptable: the cheapest acceptable one
             for (int i = 0; i < count; ++i) {
-                if (cand[i].cost <= tieLimit || (best >= 0 && cand[i].cost >= cand[best].cost))
+                if (cand[i].ranked <= tieLimit || (best >= 0 && cand[i].ranked >= cand[best].ranked))
                     continue;
                 const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]));
                 anyFlip |= s.flipped;
@@ -531,16 +589,18 @@ private:
         const double cost = cand[best].cost;
         target_ = vcg::Point3<ScalarType>::Construct(cand[best].p);
         error_ = float(area > 0 ? std::sqrt(cost / area) : std::sqrt(cost));
+        breaksFeature_ = cand[best].breaks;
         if (ctx.maxErrorAbs > 0 && error_ > ctx.maxErrorAbs)
             return reject(stats.rejectedError);
         const double qualityThr = ctx.params.qualityThreshold;
         const double shape = qualityThr > 0 ? std::clamp(bestScore.meanCompactness / qualityThr, 0.02, 1.0) : 1.0;
-        this->_priority = priorityOf(ctx, cost, area, shape);
+        this->_priority = priorityOf(ctx, cand[best].ranked, area, shape);
     }
 
     vcg::Point3<ScalarType> target_;
     float error_ = 0.0f;
     bool feasible_ = true;
+    bool breaksFeature_ = false;
     bool evaluated_ = false;
     int evaluatedAt_ = 0;  // GlobalMark when evaluated
 };

@@ -184,13 +184,20 @@ public:
     // diagonals away are reported at that cap.
     FaceType* find(const vcg::Point3d& p, double& distance)
     {
+        return find(p, distance, [](const FaceType&) { return true; });
+    }
+
+    // The closest of the faces `accept` takes.
+    template <class Accept>
+    FaceType* find(const vcg::Point3d& p, double& distance, Accept accept)
+    {
         distance = maxDist_;
         if (refs_.empty())
             return nullptr;
         Scalar d = maxDist_;
         vcg::Point3<Scalar> q;
         NoMarks marks;
-        TriangleDistance<Scalar> fn;
+        AcceptedTriangleDistance<Accept> fn{accept};
         FaceRef<FaceType>* r = grid_.GetClosest(fn, marks, offTheFarEdge(vcg::Point3<Scalar>::Construct(p)), maxDist_, d, q);
         distance = d;
         return r ? r->face : nullptr;
@@ -213,6 +220,18 @@ private:
         }
         return p;
     }
+
+    // TriangleDistance over the faces `accept` takes.
+    template <class Accept>
+    struct AcceptedTriangleDistance {
+        using QueryType = vcg::Point3<Scalar>;
+        static const QueryType& Pos(const QueryType& q) { return q; }
+        Accept& accept;
+        bool operator()(const FaceRef<FaceType>& f, const QueryType& p, Scalar& minDist, QueryType& q) const
+        {
+            return accept(*f.face) && TriangleDistance<Scalar>()(f, p, minDist, q);
+        }
+    };
 
     std::vector<FaceRef<FaceType>> refs_;
     vcg::GridStaticPtr<FaceRef<FaceType>, Scalar> grid_;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "cad_edge_collapse.h"
+#include "component_removal.h"
 #include "layer_metadata.h"
 #include "simplify_params.h"
 
@@ -14,6 +15,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <set>
 #include <string>
 
 namespace cadlod {
@@ -70,6 +74,42 @@ std::vector<typename MeshType::VertexType*> freezeUnselected(MeshType& m)
     return frozen;
 }
 
+// Faces that repeat a vertex (welding rounded coordinates makes them) have no area and no
+// edge of their own: deleting them closes nothing and opens nothing, whereas keeping them
+// would lock their vertices. Returns how many were deleted.
+template <class MeshType>
+int deleteFacesRepeatingAVertex(MeshType& m)
+{
+    int deleted = 0;
+    for (auto& f : m.face)
+        if (!f.IsD() && repeatsVertex(f)) {
+            vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
+            ++deleted;
+        }
+    return deleted;
+}
+
+// Face colours mark materials when there are few of them (an import's part and face
+// colours); a mesh painted with a measure has thousands, and its colour borders mean nothing.
+constexpr std::size_t kMaxMaterialColors = 256;
+
+template <class MeshType>
+bool faceColorsAreMaterials(const MeshType& m)
+{
+    if (!vcg::tri::HasPerFaceColor(m))
+        return false;
+    std::set<std::uint32_t> colors;
+    for (const auto& f : m.face) {
+        if (f.IsD())
+            continue;
+        const vcg::Color4b c = f.cC();
+        colors.insert(std::uint32_t(c[0]) << 24 | std::uint32_t(c[1]) << 16 | std::uint32_t(c[2]) << 8 | c[3]);
+        if (colors.size() > kMaxMaterialColors)
+            return false;
+    }
+    return colors.size() > 1;
+}
+
 }  // namespace detail
 
 template <class MeshType>
@@ -106,18 +146,28 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     ctx.maxErrorAbs = params.maxError * ctx.diagonal;
     ctx.cosNormalLimit = std::cos(params.normalThreshold * M_PI / 180.0);
 
+    stats.degenerateFaces = detail::deleteFacesRepeatingAVertex(m);
     vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+    // Part and material (colour) borders are features: a face's surface key is its part id
+    // and its colour.
     const bool parts = params.keepPartBorders && vcg::tri::HasPerFaceAttribute(m, kPartAttribute);
+    const bool colors = params.keepColorBorders && detail::faceColorsAreMaterials(m);
     typename MeshType::template PerFaceAttributeHandle<int> partHandle;
     if (parts)
         partHandle = facePartHandle(m);
-    const FeatureEdgeCounts features = markFeatureEdges(
-        m, ctx.bits, params.featureAngle, params.preserveBoundary,
-        [&](FaceType& f) { return parts ? partHandle[f] : 0; });
+    auto surfaceOf = [&](FaceType& f) -> std::uint64_t {
+        std::uint64_t key = parts ? std::uint32_t(partHandle[f]) : 0u;
+        if (colors) {
+            const vcg::Color4b c = f.cC();
+            key = key << 32 | (std::uint32_t(c[0]) << 24 | std::uint32_t(c[1]) << 16 | std::uint32_t(c[2]) << 8 | c[3]);
+        }
+        return key;
+    };
+    const FeatureEdgeCounts features =
+        markFeatureEdges(m, ctx.bits, params.featureAngle, params.preserveBoundary, surfaceOf);
     stats.featureEdges = features.feature;
     stats.boundaryEdges = features.boundary;
     stats.nonManifoldEdges = features.nonManifold;
-    stats.degenerateFaces = features.degenerateFaces;
 
     QuadricWeights weights;
     weights.feature = params.boundaryWeight;
@@ -146,15 +196,47 @@ void releaseCollapse(MeshType& m, CollapseContext<MeshType>& ctx)
         FaceType::DeleteBitFlag(ctx.bits.edge[j]);
 }
 
+namespace detail {
+
+// The last step of the relaxation ladder (collapseToTarget); false when it was taken already.
+template <class MeshType>
+bool relaxShapeGuards(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats)
+{
+    if (ctx.shapeGuards && ctx.params.minCompactness > 0) {
+        ctx.shapeGuards = false;
+        stats.relaxed.push_back("shape guards relaxed at " + std::to_string(m.fn) +
+                                " faces: triangles less compact than " + std::to_string(ctx.params.minCompactness) +
+                                " allowed");
+        return true;
+    }
+    return false;
+}
+
+}  // namespace detail
+
 // The collapses themselves, on a prepared context, until stats.targetFaces or until no
-// collapse is left.
+// collapse is left. When the face target is not met with the limits of the first pass,
+// they give way in this order (relaxToReachTarget), each step logged in stats.relaxed:
+//   1. features are never locks in the first place: collapses that break one are ranked
+//      at featurePenalty times their error (cad_edge_collapse.h), and so is removing a
+//      small component whole (component_removal.h): they run when they are cheaper;
+//   2. the shape guards (minCompactness, no free slivers).
+// Flips, the link condition (topology) and locked (non-manifold) vertices never give way.
 template <class MeshType>
 void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats, vcg::CallBackPos* progress)
 {
     using Collapse = CadEdgeCollapse<MeshType>;
     vcg::LocalOptimization<MeshType> session(m, &ctx);
     ctx.heap = &session.h;
-    session.template Init<Collapse>();
+    const bool relax = ctx.params.relaxToReachTarget && stats.targetFaces > 0;
+    auto fillHeap = [&] {
+        session.template Init<Collapse>();
+        if (relax) {
+            ComponentRemoval<MeshType>::push(m, ctx, session.h);
+            std::make_heap(session.h.begin(), session.h.end());
+        }
+    };
+    fillHeap();
     if (stats.targetFaces > 0)
         session.SetTargetSimplices(stats.targetFaces);
     const int toRemove = std::max(1, m.fn - stats.targetFaces);
@@ -168,14 +250,14 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
         collapsesSinceInit += session.nPerformedOps;
         if (progress)
             progress(std::clamp(100 - 100 * (m.fn - stats.targetFaces) / toRemove, 0, 99), "CAD edge collapse");
-        if (!heapLeft) {
-            // Refused edges left the heap, and an edge whose neighbourhood has changed
-            // since may be acceptable now: rebuild it while that still helps.
-            if (collapsesSinceInit == 0)
-                break;
-            collapsesSinceInit = 0;
-            session.template Init<Collapse>();
-        }
+        if (heapLeft)
+            continue;
+        // Refused edges left the heap, and an edge whose neighbourhood has changed since
+        // may be acceptable now: rebuild it while that still helps, then relax.
+        if (collapsesSinceInit == 0 && !(relax && detail::relaxShapeGuards(m, ctx, stats)))
+            break;
+        collapsesSinceInit = 0;
+        fillHeap();
     }
     ctx.heap = nullptr;
 }
@@ -230,11 +312,19 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
     stats.facesAfter = m.fn;
     stats.verticesAfter = m.vn;
     const bool faceTarget = params.targetFaces > 0 || params.reductionPerc > 0;  // 100 % asks for 0 faces
+    if (stats.ok && faceTarget && m.fn <= stats.targetFaces)
+        stats.stoppedBy = params.reductionPerc > 0 ? "reduction percentage" : "target face count";
+    else if (stats.ok && params.maxError > 0 && stats.rejectedError > 0)
+        stats.stoppedBy = "max error";
+    else if (stats.ok)
+        stats.stoppedBy = "no collapse left";
     if (stats.ok && faceTarget && m.fn > stats.targetFaces && stats.message.empty())
         stats.message = "stopped at " + std::to_string(m.fn) + " faces, above the target of " +
                         std::to_string(stats.targetFaces) +
-                        ": the remaining collapses would break a feature, the topology, the error bound or the "
-                        "face shape limits";
+                        (params.maxError > 0 && stats.rejectedError > 0
+                             ? ": the remaining collapses would exceed the maximum error"
+                             : ": the remaining collapses would flip faces, change the topology or touch "
+                               "non-manifold edges");
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
 }

@@ -5,12 +5,15 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 namespace cadlod {
 
 struct SimplifyParams {
-    // Stop criteria: whichever is met first. 0 disables a criterion; at least one
-    // must be set.
+    // Stop criteria. 0 disables a criterion; at least one must be set. The face count to
+    // reach comes from reductionPerc when it is set (it wins over targetFaces, as in
+    // MeshLab's own quadric filter), else from targetFaces; maxError is never exceeded by
+    // a collapse, whatever the face count.
     int targetFaces = 0;         // stop at this many faces
     double reductionPerc = 0.0;  // stop after removing this % of the input faces (0..100)
     double maxError = 0.0;       // never collapse beyond this error (fraction of bbox diagonal)
@@ -37,6 +40,13 @@ struct SimplifyParams {
     double qualityThreshold = 0.3;   // free collapses leaving faces below this compactness wait longer
     bool planarQuadric = false;      // tiny edge quadrics everywhere: steadier flat regions
     bool keepPartBorders = true;     // edges between faces of different cadlod_part ids are features
+    bool keepColorBorders = true;    // edges between faces of different colours (materials) are features
+    // What a collapse that breaks a feature (crosses a crease, moves a corner or boundary
+    // vertex) is ranked at: this many times its quadric cost. 0: features are hard locks.
+    double featurePenalty = 16.0;
+    // When the face target is not reached with the shape guards on, relax them; then
+    // remove the smallest connected components whole (each logged). Off: stop early.
+    bool relaxToReachTarget = true;
     bool selectedOnly = false;       // only collapse vertices whose faces are all selected
 };
 
@@ -56,13 +66,18 @@ struct SimplifyStats {
     int featureEdges = 0;       // creases above the feature angle and part borders
     int boundaryEdges = 0;
     int nonManifoldEdges = 0;   // their vertices are locked
-    int degenerateFaces = 0;    // faces repeating a vertex: their vertices are locked
+    int degenerateFaces = 0;    // faces repeating a vertex (no area): deleted before the first collapse
     // Why candidate collapses were refused (counted at evaluation time).
     int rejectedFlip = 0;
     int rejectedCompactness = 0;
     int rejectedFeature = 0;
     int rejectedError = 0;
     int rejectedTopology = 0;
+    // What gave way so that the target could be reached (simplify.h's relaxation ladder).
+    int featureBreaks = 0;         // executed collapses that broke a feature (priced, not refused)
+    int removedComponents = 0;     // connected components removed whole
+    std::vector<std::string> relaxed;  // one line per relaxation step, for the log
+    std::string stoppedBy;         // which criterion ended the run: "face target", "max error", ...
 
     double largestErrorFraction() const { return diagonal > 0 ? largestError / diagonal : 0.0; }
 };
@@ -71,14 +86,9 @@ struct SimplifyStats {
 // (0 when only maxError is set).
 inline int targetFaceCount(const SimplifyParams& p, int faces)
 {
-    int target = 0;
-    if (p.targetFaces > 0)
-        target = p.targetFaces;
-    if (p.reductionPerc > 0.0) {
-        const double kept = faces * (1.0 - p.reductionPerc / 100.0);
-        target = std::max(target, int(kept + 0.5));
-    }
-    return target;
+    if (p.reductionPerc > 0.0)
+        return int(faces * (1.0 - p.reductionPerc / 100.0) + 0.5);
+    return std::max(p.targetFaces, 0);
 }
 
 }  // namespace cadlod

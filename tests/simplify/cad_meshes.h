@@ -204,4 +204,33 @@ inline void assembly(CadBuilder& b, int segments)
     }
 }
 
+// A printed circuit board assembly as KiCad exports it: a thin board (part 0), a grid of
+// chips (boxes), electrolytic capacitors and one tall valve-like tube (cylinders of long
+// strips), every component a part of its own. Almost every edge is a crease or a part
+// border: at 90 % a simplifier must give features up, and must give up the cheap ones.
+inline void circuitBoard(CadBuilder& b)
+{
+    b.currentPart = 0;
+    stripPlate(b, 100, 80, 1.6, 20);
+    int part = 1;
+    for (int row = 0; row < 5; ++row)
+        for (int col = 0; col < 6; ++col) {
+            b.currentPart = part++;
+            const int chip = stripPlate(b, 7, 5, 1.2, 3);
+            b.translate(chip, 6 + 15 * col, 6 + 12 * row, 1.6);
+        }
+    for (int cap = 0; cap < 8; ++cap) {
+        b.currentPart = part++;
+        RevolveSpec s;
+        s.segments = 24;
+        const int first = revolve(b, {{0, 0}, {0, 3}, {7.5, 3}, {8, 2.5}, {8, 0}}, s);
+        b.translate(first, 8 + 12 * cap, 72, 1.6);
+    }
+    b.currentPart = part++;
+    RevolveSpec tube;
+    tube.segments = 48;
+    const int first = revolve(b, {{0, 0}, {0, 6}, {25, 6}, {27, 4}, {27, 0}}, tube);
+    b.translate(first, 88, 40, 1.6);
+}
+
 }  // namespace cadlod::test

@@ -64,7 +64,10 @@ vcg::Point3d unitNormal(const FaceType& f)
 }
 
 // Faces of `result` whose normal turns more than `limitDeg` away from the original face
-// closest to their centroid (degenerate faces count as folded).
+// closest to their centroid (degenerate faces count as folded). Where input surfaces touch
+// (a chip standing on a board: two faces at the same distance, facing opposite ways), the
+// nearest face is the best-aligned of those within a 1e-5 diagonal tie: a face lying on
+// both is not turned away from the surface it follows.
 template <class MeshResult, class MeshOriginal>
 int foldedFaces(MeshResult& result, MeshOriginal& original, double limitDeg = 90.0)
 {
@@ -72,15 +75,22 @@ int foldedFaces(MeshResult& result, MeshOriginal& original, double limitDeg = 90
     if (closest.empty())
         return 0;
     const double cosLimit = std::cos(limitDeg * M_PI / 180.0);
+    const double tie = 1e-5 * cadlod::liveDiagonal(original);
     int folded = 0;
     for (auto& f : result.face) {
         if (f.IsD())
             continue;
         const vcg::Point3d n = unitNormal(f);
-        const auto centroid = (f.cP(0) + f.cP(1) + f.cP(2)) / 3;
-        double d = 0;
-        const auto* nearest = closest.find(vcg::Point3d::Construct(centroid), d);
-        if (n.SquaredNorm() == 0 || (nearest && n * unitNormal(*nearest) < cosLimit))
+        if (n.SquaredNorm() == 0) {
+            ++folded;
+            continue;
+        }
+        const vcg::Point3d centroid = vcg::Point3d::Construct((f.cP(0) + f.cP(1) + f.cP(2)) / 3);
+        double nearest = 0, aligned = 0;
+        closest.find(centroid, nearest);
+        const auto* match = closest.find(centroid, aligned,
+                                         [&](const auto& g) { return n * unitNormal(g) >= cosLimit; });
+        if (!match || aligned > nearest + tie)
             ++folded;
     }
     return folded;

@@ -1,0 +1,130 @@
+// Connected components of a triangle mesh, for the steps that treat a small part as one
+// thing: removing it whole when it is smaller than the error a level may make (a screw
+// seen from 50 m), and replacing the parts of the coarsest level by their boxes.
+// Components are found through the VF adjacency (faces sharing a vertex are connected),
+// so the pass needs no edge table; deleted faces are ignored.
+#pragma once
+
+#include "layer_metadata.h"
+
+#include <vcg/complex/complex.h>
+
+#include <algorithm>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace cadlod {
+
+template <class MeshType>
+struct Component {
+    std::vector<typename MeshType::FacePointer> faces;
+    vcg::Box3d box;        // of its vertices
+    std::string name;      // the CAD part most of its faces belong to, or "component N"
+    double size() const { return box.IsNull() ? 0.0 : box.Diag(); }
+};
+
+// Every connected component of the live faces, smallest (bbox diagonal) first; ties keep
+// the order of their first face, so the result is deterministic. Needs VF adjacency.
+template <class MeshType>
+std::vector<Component<MeshType>> connectedComponents(MeshType& m)
+{
+    using FaceType = typename MeshType::FaceType;
+    std::vector<Component<MeshType>> out;
+    std::vector<char> seen(m.face.size(), 0);
+    std::vector<FaceType*> stack;
+    const bool parts = hasParts(m);
+    typename MeshType::template PerFaceAttributeHandle<int> partOf;
+    PartTable table;
+    if (parts) {
+        partOf = facePartHandle(m);
+        table = partTableHandle(m)();
+    }
+    for (std::size_t i = 0; i < m.face.size(); ++i) {
+        if (m.face[i].IsD() || seen[i])
+            continue;
+        Component<MeshType> c;
+        std::map<int, int> partVotes;
+        seen[i] = 1;
+        stack.assign(1, &m.face[i]);
+        while (!stack.empty()) {
+            FaceType* f = stack.back();
+            stack.pop_back();
+            c.faces.push_back(f);
+            if (parts)
+                ++partVotes[partOf[f]];
+            for (int j = 0; j < 3; ++j) {
+                c.box.Add(vcg::Point3d::Construct(f->cP(j)));
+                for (vcg::face::VFIterator<FaceType> vfi(f->V(j)); !vfi.End(); ++vfi) {
+                    const std::size_t k = std::size_t(vfi.F() - &m.face[0]);
+                    if (!vfi.F()->IsD() && !seen[k]) {
+                        seen[k] = 1;
+                        stack.push_back(vfi.F());
+                    }
+                }
+            }
+        }
+        c.name = "component " + std::to_string(out.size() + 1);
+        if (!partVotes.empty()) {
+            const auto top = std::max_element(partVotes.begin(), partVotes.end(),
+                                              [](const auto& a, const auto& b) { return a.second < b.second; });
+            if (top->first >= 0 && top->first < int(table.size()) && !table[std::size_t(top->first)].name.empty())
+                c.name = table[std::size_t(top->first)].name;
+        }
+        out.push_back(std::move(c));
+    }
+    std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.size() < b.size(); });
+    return out;
+}
+
+// Deletes the component's faces and the vertices they use (no other live face uses them).
+template <class MeshType>
+void removeComponent(MeshType& m, const Component<MeshType>& c)
+{
+    for (auto* f : c.faces) {
+        if (f->IsD())
+            continue;
+        for (int j = 0; j < 3; ++j)
+            if (!f->V(j)->IsD())
+                vcg::tri::Allocator<MeshType>::DeleteVertex(m, *f->V(j));
+        vcg::tri::Allocator<MeshType>::DeleteFace(m, *f);
+    }
+}
+
+// The twelve triangles of an axis-aligned box, outward facing, appended to `m` as part
+// `part` (when the mesh has parts) with the given face colour.
+template <class MeshType>
+void appendBox(MeshType& m, const vcg::Box3d& box, int part, const vcg::Color4b& color)
+{
+    using CoordType = typename MeshType::CoordType;
+    auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, 8);
+    typename MeshType::VertexPointer v[8];
+    for (int k = 0; k < 8; ++k, ++vi) {
+        const vcg::Point3d p(k & 1 ? box.max[0] : box.min[0], k & 2 ? box.max[1] : box.min[1],
+                             k & 4 ? box.max[2] : box.min[2]);
+        vi->P() = CoordType::Construct(p);
+        v[k] = &*vi;
+    }
+    // Corners are numbered by bits (x, y, z); each face lists its corners counter-clockwise
+    // seen from outside.
+    static const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                    {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    auto fi = vcg::tri::Allocator<MeshType>::AddFaces(m, 12);
+    const bool parts = vcg::tri::HasPerFaceAttribute(m, kPartAttribute);
+    const bool colors = vcg::tri::HasPerFaceColor(m);
+    typename MeshType::template PerFaceAttributeHandle<int> partOf;
+    if (parts)
+        partOf = facePartHandle(m);
+    for (const auto& q : quads)
+        for (int t = 0; t < 2; ++t, ++fi) {
+            fi->V(0) = v[q[0]];
+            fi->V(1) = v[q[1 + t]];
+            fi->V(2) = v[q[2 + t]];
+            if (colors)
+                fi->C() = color;
+            if (parts)
+                partOf[fi] = part;
+        }
+}
+
+}  // namespace cadlod
