@@ -5,9 +5,9 @@
 // normals, marks or adjacency; deleted elements are ignored.
 #pragma once
 
-#include <vcg/complex/algorithms/closest.h>
+#include "triangle_tree.h"
+
 #include <vcg/complex/complex.h>
-#include <vcg/space/index/grid_static_ptr.h>
 
 #include <algorithm>
 #include <cmath>
@@ -66,80 +66,6 @@ double liveDiagonal(const MeshType& m)
 
 namespace detail {
 
-// Closest point of triangle abc to p (Ericson, Real-Time Collision Detection, 5.1.5).
-inline vcg::Point3d closestOnTriangle(const vcg::Point3d& p, const vcg::Point3d& a, const vcg::Point3d& b,
-                                      const vcg::Point3d& c)
-{
-    const vcg::Point3d ab = b - a, ac = c - a, ap = p - a;
-    const double d1 = ab * ap, d2 = ac * ap;
-    if (d1 <= 0 && d2 <= 0)
-        return a;
-    const vcg::Point3d bp = p - b;
-    const double d3 = ab * bp, d4 = ac * bp;
-    if (d3 >= 0 && d4 <= d3)
-        return b;
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0)
-        return a + ab * (d1 / (d1 - d3));
-    const vcg::Point3d cp = p - c;
-    const double d5 = ab * cp, d6 = ac * cp;
-    if (d6 >= 0 && d5 <= d6)
-        return c;
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0)
-        return a + ac * (d2 / (d2 - d6));
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-        return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-    const double denom = va + vb + vc;
-    if (!(std::abs(denom) > 0))
-        return a;
-    return a + ab * (vb / denom) + ac * (vc / denom);
-}
-
-// A live face as the grid sees it (vcglib's grid would also index deleted faces).
-template <class FaceType>
-struct FaceRef {
-    using ScalarType = typename FaceType::ScalarType;
-    FaceType* face;
-    typename FaceType::CoordType cP(int j) const { return face->cP(j); }
-    bool IsD() const { return false; }
-    template <class Box>
-    void GetBBox(Box& b) const
-    {
-        b.Set(cP(0));
-        b.Add(cP(1));
-        b.Add(cP(2));
-    }
-};
-
-struct NoMarks {
-    void UnMarkAll() const {}
-    template <class T> bool IsMarked(T) const { return false; }
-    template <class T> void Mark(T) const {}
-};
-
-// Grid functor: distance from a point to a face, no face normal needed.
-template <class Scalar>
-struct TriangleDistance {
-    using QueryType = vcg::Point3<Scalar>;
-    static const QueryType& Pos(const QueryType& q) { return q; }
-    template <class Face>
-    bool operator()(const Face& f, const vcg::Point3<Scalar>& p, Scalar& minDist, vcg::Point3<Scalar>& q) const
-    {
-        const vcg::Point3d pd = vcg::Point3d::Construct(p);
-        const vcg::Point3d c = closestOnTriangle(pd, vcg::Point3d::Construct(f.cP(0)),
-                                                 vcg::Point3d::Construct(f.cP(1)),
-                                                 vcg::Point3d::Construct(f.cP(2)));
-        const double d = vcg::Distance(pd, c);
-        if (d >= double(minDist))
-            return false;
-        minDist = Scalar(d);
-        q = vcg::Point3<Scalar>::Construct(c);
-        return true;
-    }
-};
-
 template <class MeshType>
 std::vector<typename MeshType::FaceType*> liveFaces(MeshType& m)
 {
@@ -151,91 +77,72 @@ std::vector<typename MeshType::FaceType*> liveFaces(MeshType& m)
     return faces;
 }
 
-// Closest live face of a mesh to query points.
+// Closest live face of a mesh to query points (a TriangleTree over its faces).
 template <class MeshType>
 class ClosestFace
 {
 public:
     using FaceType = typename MeshType::FaceType;
-    using Scalar = typename MeshType::ScalarType;
 
-    // `queries`: where the points to look up lie (empty: near m); the grid's box holds
-    // them with a 1 % margin, so that lookups take the grid's fast inside path.
-    explicit ClosestFace(MeshType& m, const vcg::Box3d& queries = vcg::Box3d())
+    explicit ClosestFace(MeshType& m) : faces_(liveFaces(m)), tree_(triangles(faces_))
     {
-        for (auto& f : m.face)
-            if (!f.IsD())
-                refs_.push_back({&f});
-        vcg::Box3d box = queries;
-        for (const auto& r : refs_)
+        for (const FaceType* f : faces_)
             for (int j = 0; j < 3; ++j)
-                box.Add(vcg::Point3d::Construct(r.cP(j)));
-        const double diag = box.IsNull() ? 1.0 : box.Diag();
-        maxDist_ = Scalar(diag * 4 + 1);
-        if (refs_.empty())
-            return;
-        const double margin = 0.01 * diag + 1e-6 * (box.max.Norm() + box.min.Norm()) + 1e-30;
-        box.Offset(margin);
-        grid_.Set(refs_.begin(), refs_.end(), vcg::Box3<Scalar>::Construct(box));
+                bounds_.Add(vcg::Point3d::Construct(f->cP(j)));
+        maxDist_ = bounds_.IsNull() ? 1.0 : 4.0 * bounds_.Diag() + 1.0;
     }
-    bool empty() const { return refs_.empty(); }
+    bool empty() const { return faces_.empty(); }
+    // The box of the indexed faces.
+    const vcg::Box3d& bounds() const { return bounds_; }
 
     // Closest face (null if none) and the distance to it; points farther than a few
     // diagonals away are reported at that cap.
-    FaceType* find(const vcg::Point3d& p, double& distance)
+    FaceType* find(const vcg::Point3d& p, double& distance) const
     {
-        return find(p, distance, [](const FaceType&) { return true; });
+        const std::int64_t i = tree_.closest(p, maxDist_, distance);
+        return i >= 0 ? faces_[std::size_t(i)] : nullptr;
+    }
+
+    // The same, searching only for faces closer than `hint` (a face near p, e.g. the one
+    // found for the point before): nearby lookups in a row prune most of the tree.
+    FaceType* find(const vcg::Point3d& p, double& distance, std::int64_t& hint) const
+    {
+        if (hint < 0 || std::size_t(hint) >= faces_.size()) {
+            hint = tree_.closest(p, maxDist_, distance);
+        } else {
+            const double bound = tree_.distance(std::size_t(hint), p);
+            const std::int64_t i = tree_.closest(p, bound * (1 + 1e-12) + 1e-300, distance);
+            if (i >= 0)
+                hint = i;
+            else
+                distance = bound;
+        }
+        return hint >= 0 ? faces_[std::size_t(hint)] : nullptr;
     }
 
     // The closest of the faces `accept` takes.
     template <class Accept>
-    FaceType* find(const vcg::Point3d& p, double& distance, Accept accept)
+    FaceType* find(const vcg::Point3d& p, double& distance, Accept accept) const
     {
-        distance = maxDist_;
-        if (refs_.empty())
-            return nullptr;
-        Scalar d = maxDist_;
-        vcg::Point3<Scalar> q;
-        NoMarks marks;
-        AcceptedTriangleDistance<Accept> fn{accept};
-        FaceRef<FaceType>* r = grid_.GetClosest(fn, marks, offTheFarEdge(vcg::Point3<Scalar>::Construct(p)), maxDist_, d, q);
-        distance = d;
-        return r ? r->face : nullptr;
+        const std::int64_t i =
+            tree_.closest(p, maxDist_, distance, [&](std::size_t k) { return accept(*faces_[k]); });
+        return i >= 0 ? faces_[std::size_t(i)] : nullptr;
     }
-
-    const vcg::Box3<Scalar>& gridBox() const { return grid_.bbox; }
 
 private:
-    // vcglib's grid turns a point inside its box into a cell index without clamping it,
-    // and float rounding maps a point a few steps below the box's far side one cell past
-    // the end (an assertion; a read out of bounds with NDEBUG). Such a point is moved onto
-    // the side, i.e. outside, by those few float steps.
-    vcg::Point3<Scalar> offTheFarEdge(vcg::Point3<Scalar> p) const
+    static std::vector<TriangleTree::Triangle> triangles(const std::vector<FaceType*>& faces)
     {
-        const vcg::Box3<Scalar>& box = grid_.bbox;
-        for (int j = 0; j < 3; ++j) {
-            const Scalar band = 8 * std::numeric_limits<Scalar>::epsilon() * (std::abs(box.max[j]) + std::abs(box.min[j]));
-            if (p[j] < box.max[j] && p[j] >= box.max[j] - band)
-                p[j] = box.max[j];
-        }
-        return p;
+        std::vector<TriangleTree::Triangle> t(faces.size());
+        for (std::size_t i = 0; i < faces.size(); ++i)
+            for (int j = 0; j < 3; ++j)
+                t[i][std::size_t(j)] = vcg::Point3d::Construct(faces[i]->cP(j));
+        return t;
     }
 
-    // TriangleDistance over the faces `accept` takes.
-    template <class Accept>
-    struct AcceptedTriangleDistance {
-        using QueryType = vcg::Point3<Scalar>;
-        static const QueryType& Pos(const QueryType& q) { return q; }
-        Accept& accept;
-        bool operator()(const FaceRef<FaceType>& f, const QueryType& p, Scalar& minDist, QueryType& q) const
-        {
-            return accept(*f.face) && TriangleDistance<Scalar>()(f, p, minDist, q);
-        }
-    };
-
-    std::vector<FaceRef<FaceType>> refs_;
-    vcg::GridStaticPtr<FaceRef<FaceType>, Scalar> grid_;
-    Scalar maxDist_ = 1;
+    std::vector<FaceType*> faces_;
+    TriangleTree tree_;
+    vcg::Box3d bounds_;
+    double maxDist_ = 1.0;
 };
 
 }  // namespace detail
@@ -243,20 +150,22 @@ private:
 // Distances from `faceSamples` area-uniform points on `from` (plus its vertices) to `to`.
 // `vertexDistances`, when given, receives the distance of every vertex of `from` (indexed
 // like from.vert; deleted vertices get 0).
+// `closest` is an index of `to` (detail::ClosestFace), built once when many meshes are
+// measured against the same one.
 template <class MeshFrom, class MeshTo>
-HausdorffStats oneSidedHausdorff(MeshFrom& from, MeshTo& to, std::size_t faceSamples, unsigned seed = 1,
-                                 std::vector<double>* vertexDistances = nullptr)
+HausdorffStats oneSidedHausdorff(MeshFrom& from, detail::ClosestFace<MeshTo>& closest, std::size_t faceSamples,
+                                 unsigned seed = 1, std::vector<double>* vertexDistances = nullptr)
 {
     HausdorffStats s;
     const auto sources = detail::liveFaces(from);
-    detail::ClosestFace<MeshTo> closest(to, liveVertexBox(from));
     if (closest.empty() || sources.empty())
         return s;
 
     double sum = 0.0, sumSquares = 0.0;
+    std::int64_t hint = -1;
     auto measure = [&](const vcg::Point3d& p) {
         double d = 0;
-        closest.find(p, d);
+        closest.find(p, d, hint);
         s.max = std::max(s.max, d);
         sum += d;
         sumSquares += d * d;
@@ -281,6 +190,13 @@ HausdorffStats oneSidedHausdorff(MeshFrom& from, MeshTo& to, std::size_t faceSam
         total += 0.5 * ((vcg::Point3d::Construct(f->cP(1)) - a) ^ (vcg::Point3d::Construct(f->cP(2)) - a)).Norm();
         cumulativeArea.push_back(total);
     }
+    // Random points, measured face by face: neighbouring lookups in a row are fast.
+    struct Sample {
+        std::size_t face;
+        double u, v;
+    };
+    std::vector<Sample> picks;
+    picks.reserve(total > 0 ? faceSamples : 0);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (std::size_t i = 0; i < faceSamples && total > 0; ++i) {
@@ -293,14 +209,27 @@ HausdorffStats oneSidedHausdorff(MeshFrom& from, MeshTo& to, std::size_t faceSam
             u = 1 - u;
             v = 1 - v;
         }
-        const vcg::Point3d a = vcg::Point3d::Construct(sources[k]->cP(0));
-        const vcg::Point3d b = vcg::Point3d::Construct(sources[k]->cP(1));
-        const vcg::Point3d c = vcg::Point3d::Construct(sources[k]->cP(2));
-        measure(a + (b - a) * u + (c - a) * v);
+        picks.push_back({k, u, v});
+    }
+    std::stable_sort(picks.begin(), picks.end(), [](const Sample& x, const Sample& y) { return x.face < y.face; });
+    for (const Sample& sample : picks) {
+        const auto* f = sources[sample.face];
+        const vcg::Point3d a = vcg::Point3d::Construct(f->cP(0));
+        const vcg::Point3d b = vcg::Point3d::Construct(f->cP(1));
+        const vcg::Point3d c = vcg::Point3d::Construct(f->cP(2));
+        measure(a + (b - a) * sample.u + (c - a) * sample.v);
     }
     s.mean = s.samples ? sum / double(s.samples) : 0.0;
     s.rms = s.samples ? std::sqrt(sumSquares / double(s.samples)) : 0.0;
     return s;
+}
+
+template <class MeshFrom, class MeshTo>
+HausdorffStats oneSidedHausdorff(MeshFrom& from, MeshTo& to, std::size_t faceSamples, unsigned seed = 1,
+                                 std::vector<double>* vertexDistances = nullptr)
+{
+    detail::ClosestFace<MeshTo> closest(to);
+    return oneSidedHausdorff(from, closest, faceSamples, seed, vertexDistances);
 }
 
 // Both directions; fractions are of A's bounding-box diagonal.

@@ -6,6 +6,8 @@
 #include "core/hausdorff.h"
 #include "test_mesh.h"
 
+#include <vcg/space/distance3.h>
+
 #include <gtest/gtest.h>
 
 #include <vcg/complex/algorithms/create/platonic.h>
@@ -29,13 +31,18 @@ void offsetSphere(TestMesh& m, float scale = 7.3f)
     vcg::tri::UpdateBounding<TestMesh>::Box(m);
 }
 
+// vcglib's own point-triangle distance over every face: an independent oracle.
 double bruteForce(TestMesh& m, const vcg::Point3d& p)
 {
     double best = std::numeric_limits<double>::max();
-    for (auto& f : m.face)
-        best = std::min(best, vcg::Distance(p, detail::closestOnTriangle(p, vcg::Point3d::Construct(f.cP(0)),
-                                                                         vcg::Point3d::Construct(f.cP(1)),
-                                                                         vcg::Point3d::Construct(f.cP(2)))));
+    for (auto& f : m.face) {
+        const vcg::Triangle3<double> t(vcg::Point3d::Construct(f.cP(0)), vcg::Point3d::Construct(f.cP(1)),
+                                       vcg::Point3d::Construct(f.cP(2)));
+        double d = 0;
+        vcg::Point3d closest;
+        vcg::TrianglePointDistance(t, p, d, closest);
+        best = std::min(best, d);
+    }
     return best;
 }
 
@@ -58,15 +65,15 @@ std::vector<vcg::Point3d> pointsAtTheEdgeOf(const vcg::Box3f& box)
 
 }  // namespace
 
-TEST(ClosestFace, AgreesWithBruteForceUpToAndBeyondTheGridEdges)
+TEST(ClosestFace, AgreesWithBruteForceUpToAndBeyondTheMeshBox)
 {
     for (int i = 0; i < 60; ++i) {  // many sizes: whether the division rounds up depends on them
         TestMesh m;
         offsetSphere(m, 1.0f + 0.37f * float(i));
         detail::ClosestFace<TestMesh> closest(m);
-        // The edges of the grid cadlod builds, and of the one vcglib's own Set() would
-        // build (the faces' box grown by diagonal / face count).
-        std::vector<vcg::Point3d> points = pointsAtTheEdgeOf(closest.gridBox());
+        // The edges of the faces' box, and of the one vcglib's grid would build (grown by
+        // diagonal / face count).
+        std::vector<vcg::Point3d> points = pointsAtTheEdgeOf(vcg::Box3f::Construct(closest.bounds()));
         vcg::Box3f vcgBox = m.bbox;
         vcgBox.Offset(m.bbox.Diag() / float(m.fn));
         for (const vcg::Point3d& p : pointsAtTheEdgeOf(vcgBox))

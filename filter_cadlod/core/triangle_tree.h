@@ -1,0 +1,190 @@
+// A bounding-volume hierarchy over triangles for closest-point queries: O(log n) for a
+// point near the surface or far from it. vcglib's uniform grid searches shell by shell,
+// so a point ten cells away from the surface (a coarse LOD level measured against the
+// original) visits a thousand cells; vcglib's AABB tree allocates arrays the size of the
+// mesh on every query.
+//
+// Built once by median splits along the longest axis of the centroids' box; a query walks
+// it depth first, nearer child first, and skips every box farther than the best so far.
+#pragma once
+
+#include <vcg/space/box3.h>
+#include <vcg/space/point3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace cadlod {
+
+class TriangleTree
+{
+public:
+    using Triangle = std::array<vcg::Point3d, 3>;
+
+    // `triangles[i]` is the i-th triangle; closest() returns that index.
+    explicit TriangleTree(std::vector<Triangle> triangles) : triangles_(std::move(triangles))
+    {
+        order_.resize(triangles_.size());
+        for (std::uint32_t i = 0; i < order_.size(); ++i)
+            order_[i] = i;
+        centroids_.resize(triangles_.size());
+        for (std::size_t i = 0; i < triangles_.size(); ++i)
+            centroids_[i] = (triangles_[i][0] + triangles_[i][1] + triangles_[i][2]) / 3.0;
+        if (!triangles_.empty()) {
+            nodes_.reserve(2 * triangles_.size() / kLeafSize + 2);
+            nodes_.emplace_back();
+            build(0, 0, std::uint32_t(order_.size()));
+        }
+        centroids_.clear();
+        centroids_.shrink_to_fit();
+    }
+
+    bool empty() const { return triangles_.empty(); }
+
+    double distance(std::size_t index, const vcg::Point3d& p) const
+    {
+        return std::sqrt(triangleDistance2(triangles_[index], p));
+    }
+
+    // Index of the closest triangle to p (-1 if none within maxDistance) and the distance.
+    std::int64_t closest(const vcg::Point3d& p, double maxDistance, double& distance) const
+    {
+        return closest(p, maxDistance, distance, [](std::size_t) { return true; });
+    }
+
+    // The same among the triangles `accept(index)` takes.
+    template <class Accept>
+    std::int64_t closest(const vcg::Point3d& p, double maxDistance, double& distance, Accept accept) const
+    {
+        distance = maxDistance;
+        if (nodes_.empty())
+            return -1;
+        double best2 = maxDistance * maxDistance;
+        std::int64_t best = -1;
+        std::uint32_t stack[64];
+        int top = 0;
+        stack[top++] = 0;
+        while (top > 0) {
+            const Node& node = nodes_[stack[--top]];
+            if (boxDistance2(node.box, p) >= best2)
+                continue;
+            if (node.count > 0) {
+                for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+                    if (!accept(order_[k]))
+                        continue;
+                    const double d2 = triangleDistance2(triangles_[order_[k]], p);
+                    if (d2 < best2) {
+                        best2 = d2;
+                        best = order_[k];
+                    }
+                }
+                continue;
+            }
+            const std::uint32_t a = node.first, b = node.first + 1;  // children are adjacent
+            const double da = boxDistance2(nodes_[a].box, p), db = boxDistance2(nodes_[b].box, p);
+            // Push the farther first, so that the nearer is searched first.
+            if (da <= db) {
+                if (db < best2)
+                    stack[top++] = b;
+                if (da < best2)
+                    stack[top++] = a;
+            } else {
+                if (da < best2)
+                    stack[top++] = a;
+                if (db < best2)
+                    stack[top++] = b;
+            }
+        }
+        distance = best >= 0 ? std::sqrt(best2) : maxDistance;
+        return best;
+    }
+
+private:
+    static constexpr std::uint32_t kLeafSize = 4;
+
+    struct Node {
+        vcg::Box3d box;
+        std::uint32_t first = 0;  // leaf: first index into order_; inner: index of the first child
+        std::uint32_t count = 0;  // leaf: number of triangles; inner: 0
+    };
+
+    // Fills node `slot` with the triangles order_[begin, end); an inner node's two children
+    // sit next to each other, so it needs one index.
+    void build(std::uint32_t slot, std::uint32_t begin, std::uint32_t end)
+    {
+        vcg::Box3d box, centres;
+        for (std::uint32_t k = begin; k < end; ++k) {
+            for (const vcg::Point3d& v : triangles_[order_[k]])
+                box.Add(v);
+            centres.Add(centroids_[order_[k]]);
+        }
+        nodes_[slot].box = box;
+        if (end - begin <= kLeafSize) {
+            nodes_[slot].first = begin;
+            nodes_[slot].count = end - begin;
+            return;
+        }
+        const vcg::Point3d extent = centres.max - centres.min;
+        const int axis = extent[0] >= extent[1] && extent[0] >= extent[2] ? 0 : (extent[1] >= extent[2] ? 1 : 2);
+        const std::uint32_t middle = begin + (end - begin) / 2;
+        std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end,
+                         [&](std::uint32_t x, std::uint32_t y) { return centroids_[x][axis] < centroids_[y][axis]; });
+        const std::uint32_t children = std::uint32_t(nodes_.size());
+        nodes_.emplace_back();
+        nodes_.emplace_back();
+        nodes_[slot].first = children;
+        nodes_[slot].count = 0;
+        build(children, begin, middle);
+        build(children + 1, middle, end);
+    }
+
+    static double boxDistance2(const vcg::Box3d& b, const vcg::Point3d& p)
+    {
+        double d2 = 0;
+        for (int i = 0; i < 3; ++i) {
+            const double d = p[i] < b.min[i] ? b.min[i] - p[i] : (p[i] > b.max[i] ? p[i] - b.max[i] : 0.0);
+            d2 += d * d;
+        }
+        return d2;
+    }
+
+    // Squared distance from p to the triangle (Ericson, Real-Time Collision Detection, 5.1.5).
+    static double triangleDistance2(const Triangle& t, const vcg::Point3d& p)
+    {
+        const vcg::Point3d &a = t[0], &b = t[1], &c = t[2];
+        const vcg::Point3d ab = b - a, ac = c - a, ap = p - a;
+        const double d1 = ab * ap, d2 = ac * ap;
+        if (d1 <= 0 && d2 <= 0)
+            return ap.SquaredNorm();
+        const vcg::Point3d bp = p - b;
+        const double d3 = ab * bp, d4 = ac * bp;
+        if (d3 >= 0 && d4 <= d3)
+            return bp.SquaredNorm();
+        const double vc = d1 * d4 - d3 * d2;
+        if (vc <= 0 && d1 >= 0 && d3 <= 0)
+            return (ap - ab * (d1 / (d1 - d3))).SquaredNorm();
+        const vcg::Point3d cp = p - c;
+        const double d5 = ab * cp, d6 = ac * cp;
+        if (d6 >= 0 && d5 <= d6)
+            return cp.SquaredNorm();
+        const double vb = d5 * d2 - d1 * d6;
+        if (vb <= 0 && d2 >= 0 && d6 <= 0)
+            return (ap - ac * (d2 / (d2 - d6))).SquaredNorm();
+        const double va = d3 * d6 - d5 * d4;
+        if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+            return (bp - (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))).SquaredNorm();
+        const double denom = 1.0 / (va + vb + vc);
+        return (ap - ab * (vb * denom) - ac * (vc * denom)).SquaredNorm();
+    }
+
+    std::vector<Triangle> triangles_;
+    std::vector<std::uint32_t> order_;
+    std::vector<vcg::Point3d> centroids_;
+    std::vector<Node> nodes_;
+};
+
+}  // namespace cadlod
