@@ -5,7 +5,9 @@
 // removal competes with the collapses on the same terms: its cost is the quadric cost of
 // moving every plane of the component by its size (the distance a viewer's ray may miss by),
 // ranked, like any feature break, at featurePenalty times that. The largest component is
-// never removed; a maximum error forbids removing anything larger than it.
+// never removed; a maximum error forbids removing anything larger than it. Neither is a
+// component with a vertex where another component has one: that is a piece of a surface
+// exported unwelded (a triangle soup, faces split at a seam), and removing it opens a hole.
 #pragma once
 
 #include "cad_edge_collapse.h"
@@ -16,6 +18,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace cadlod {
@@ -35,11 +38,14 @@ public:
     static void push(MeshType& m, Context& ctx, HeapType& heap)
     {
         const std::vector<Component<MeshType>> components = connectedComponents(m);
+        const std::vector<bool> touching = touchingOthers(m, components);
         const double penalty = std::max(1.0, ctx.params.featurePenalty);
         for (std::size_t i = 0; i + 1 < components.size(); ++i) {
             const Component<MeshType>& c = components[i];
             if (ctx.maxErrorAbs > 0 && c.size() > ctx.maxErrorAbs)
                 break;
+            if (touching[i])
+                continue;
             // (vcglib's visited bit is not free here: the collapse's Init leaves it set.)
             std::vector<VertexType*> vertices;
             double weight = 0.0;
@@ -72,6 +78,7 @@ public:
         c.faces = facesConnectedTo(m, seed);
         removeComponent(m, c);
         ++ctx.stats->removedComponents;
+        ctx.stats->largestRemovedComponent = std::max(ctx.stats->largestRemovedComponent, size_);
         ctx.largestError = std::max(ctx.largestError, size_);
         char line[256];
         std::snprintf(line, sizeof line, "removed %s whole (%zu faces, size %.4g %% of the diagonal)", name_.c_str(),
@@ -80,6 +87,42 @@ public:
     }
 
 private:
+    // Per component: whether one of its vertices stands exactly where a vertex of another
+    // component stands.
+    static std::vector<bool> touchingOthers(MeshType& m, const std::vector<Component<MeshType>>& components)
+    {
+        struct Key {
+            float x, y, z;
+            bool operator==(const Key& k) const { return x == k.x && y == k.y && z == k.z; }
+        };
+        struct Hash {
+            std::size_t operator()(const Key& k) const
+            {
+                std::size_t h = std::hash<float>()(k.x);
+                h = h * 1000003u ^ std::hash<float>()(k.y);
+                return h * 1000003u ^ std::hash<float>()(k.z);
+            }
+        };
+        std::vector<bool> touching(components.size(), false);
+        std::vector<int> componentOf(m.vert.size(), -1);
+        std::unordered_map<Key, int, Hash> owner;
+        for (std::size_t c = 0; c < components.size(); ++c)
+            for (auto* f : components[c].faces)
+                for (int j = 0; j < 3; ++j) {
+                    const std::size_t v = std::size_t(f->V(j) - &m.vert[0]);
+                    if (componentOf[v] >= 0)
+                        continue;
+                    componentOf[v] = int(c);
+                    const auto& p = f->V(j)->cP();
+                    const auto [it, added] = owner.emplace(Key{float(p[0]), float(p[1]), float(p[2])}, int(c));
+                    if (!added && it->second != int(c)) {
+                        touching[c] = true;
+                        touching[std::size_t(it->second)] = true;
+                    }
+                }
+        return touching;
+    }
+
     ComponentRemoval(std::vector<VertexType*> vertices, double size, std::string name, ScalarType priority)
         : vertices_(std::move(vertices)), size_(size), name_(std::move(name)), priority_(priority)
     {

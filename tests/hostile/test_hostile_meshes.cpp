@@ -64,7 +64,7 @@ std::vector<std::array<float, 9>> faceCorners(const TestMesh& m)
 std::string stoppedAbove(int faces, int target)
 {
     return "stopped at " + std::to_string(faces) + " faces, above the target of " + std::to_string(target) +
-           ": the remaining collapses would break a feature, the topology, the error bound or the face shape limits";
+           ": the remaining collapses would flip faces, change the topology or touch non-manifold edges";
 }
 
 }  // namespace
