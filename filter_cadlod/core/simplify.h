@@ -228,10 +228,13 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
     using Collapse = CadEdgeCollapse<MeshType>;
     vcg::LocalOptimization<MeshType> session(m, &ctx);
     ctx.heap = &session.h;
-    const bool relax = ctx.params.relaxToReachTarget && stats.targetFaces > 0;
+    // Components are removed whole when that is cheaper, toward a face target or within a
+    // maximum error; the shape guards relax only toward a face target.
+    const bool faceTarget = ctx.params.relaxToReachTarget && stats.targetFaces > 0;
+    const bool removals = ctx.params.relaxToReachTarget && (stats.targetFaces > 0 || ctx.maxErrorAbs > 0);
     auto fillHeap = [&] {
         session.template Init<Collapse>();
-        if (relax) {
+        if (removals) {
             ComponentRemoval<MeshType>::push(m, ctx, session.h);
             std::make_heap(session.h.begin(), session.h.end());
         }
@@ -254,7 +257,7 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
             continue;
         // Refused edges left the heap, and an edge whose neighbourhood has changed since
         // may be acceptable now: rebuild it while that still helps, then relax.
-        if (collapsesSinceInit == 0 && !(relax && detail::relaxShapeGuards(m, ctx, stats)))
+        if (collapsesSinceInit == 0 && !(faceTarget && detail::relaxShapeGuards(m, ctx, stats)))
             break;
         collapsesSinceInit = 0;
         fillHeap();
@@ -302,6 +305,7 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
         if (params.selectedOnly)
             vcg::tri::UpdateSelection<MeshType>::VertexClear(m);
         stats.largestError = ctx.largestError;
+        stats.errorBound = ctx.maxErrorAbs;
     } else {
         stats.ok = false;
         stats.message = "the mesh has no extent (all vertices coincide or are not finite)";

@@ -76,6 +76,8 @@ struct SimplifyStats {
     // What gave way so that the target could be reached (simplify.h's relaxation ladder).
     int featureBreaks = 0;         // executed collapses that broke a feature (priced, not refused)
     int removedComponents = 0;     // connected components removed whole
+    double largestRemovedComponent = 0.0;  // bbox diagonal, model units
+    double errorBound = 0.0;       // the maximum collapse error in force, model units (0: none)
     std::vector<std::string> relaxed;  // one line per relaxation step, for the log
     std::string stoppedBy;         // which criterion ended the run: "face target", "max error", ...
 

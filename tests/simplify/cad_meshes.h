@@ -157,6 +157,17 @@ inline int shaftTriangles(int segments, int cylinderRings, bool fans)
     return segments * ((fans ? 2 : 4) + 2 * 5 + 2 * 3 * cylinderRings);
 }
 
+// The shaft (centre-drilled ends) as a CAD exporter tessellates it with about `triangles`
+// triangles: a finer chord tolerance (segments ~ sqrt(size)) and more rings along the
+// cylinders (a maximum edge length) as it grows. The bench sizes.
+inline RevolveSpec shaftSpecForTriangles(int triangles)
+{
+    const double scale = std::sqrt(triangles / 24000.0);
+    const int segments = int(std::lround(1200 * scale));
+    const int rings = std::max(1, int(std::lround((double(triangles) / segments - 14) / 6)));
+    return shaftSpec(segments, rings);
+}
+
 // A closed box (sizeX × sizeY × thickness) whose large faces are zig-zag strips between
 // `perEdge` points on each long side, and whose sides are strips: the slivers CAD
 // exporters make of big planar faces.

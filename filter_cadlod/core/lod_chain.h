@@ -1,0 +1,250 @@
+// A LOD chain planned by screen-space error (design.md §5): what a VR engine needs, from
+// the distance where the model fills the viewport out to where it is a few pixels high.
+//
+// Level k is meant for the distance d_k = d_first * ratio^(k-1), from d_first = d_fill / 32
+// (d_fill: where the model's diagonal spans the viewport height; a viewer may come closer,
+// and an over-tessellated CAD part loses most of its triangles there already). A distance
+// whose mesh is less than 10 % lighter than the last level's adds no level. Its budget is the error that projects to
+// the pixel error there. One collapse session (the quadrics carry the whole history, so
+// errors do not restart at each level) runs with that budget as its maximum error; there
+// features, part borders and whole small components give way as soon as breaking them
+// costs less than the budget (simplify.h). A copy of the mesh is then taken as level k and
+// measured against level 0 (symmetric Hausdorff); the ratio between the measured and the
+// requested error steers the next budget, so a collapse error that underestimates the
+// distance a viewer sees is corrected level by level. When the next distance passes the
+// point where the model is `proxyPixels` high, the chain ends with a proxy: one
+// axis-aligned box per remaining connected component (a box per part).
+//
+// Every level's range comes from its measured error (lod_plan.h): it is drawn from where
+// that error projects to the pixel error, until the next level's does. The last level is
+// drawn for ever unless `cullPixels` is set.
+#pragma once
+
+#include "components.h"
+#include "lod_builder.h"
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace cadlod {
+
+struct LodChainOptions {
+    ViewParams view;                  // camera and pixel error
+    double distanceRatio = 2.0;       // between the distances of consecutive levels
+    double proxyPixels = 8.0;         // the box proxy serves from where the model is this many px high
+    double cullPixels = 0.0;          // > 0: not drawn once the model is smaller than this many px
+    std::size_t hausdorffSamples = 0; // face samples per side; 0: as many as level-0 faces, 100 000 to 500 000
+    SimplifyParams simplify;          // placement and protection; the budget is set per level
+    int setId = 1;
+};
+
+// Switch-in distance of the last level when the model is never culled.
+inline constexpr double kNeverCulled = 1e30;
+// The first level is planned this many times closer than where the model fills the view.
+inline constexpr double kCloseUpFactor = 32.0;
+// A coarse level is sampled with at most this many points per face (besides its vertices)
+// when measured against level 0: its points stand far from level 0, where each lookup is
+// slow, and a few dozen per face find the largest distance of a flat triangle to the
+// surface it replaces (MeshLab's Hausdorff filter samples one point per vertex).
+inline constexpr std::size_t kBackwardSamplesPerFace = 64;
+
+namespace detail {
+
+inline double tanHalfFov(const ViewParams& view) { return std::tan(0.5 * view.fovYDegrees * M_PI / 180.0); }
+
+// The geometric error that projects to the pixel error at distance d.
+inline double errorBudgetAt(double d, const ViewParams& view)
+{
+    return view.pixelThreshold * 2.0 * d * tanHalfFov(view) / view.viewportHeightPx;
+}
+
+// Where a length `size` spans `pixels` pixels of the viewport height.
+inline double distanceForPixels(double size, double pixels, const ViewParams& view)
+{
+    return size * view.viewportHeightPx / (2.0 * tanHalfFov(view) * pixels);
+}
+
+// Replaces `m` by one box per connected component at least `minSize` large, keeping each
+// one's part and colour; the smaller ones are left out, counted in `stats`.
+template <class MeshType>
+void boxProxy(MeshType& m, double minSize, SimplifyStats& stats)
+{
+    struct Box {
+        vcg::Box3d box;
+        int part;
+        vcg::Color4b color;
+    };
+    std::vector<Box> boxes;
+    vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+    const bool parts = hasParts(m);
+    typename MeshType::template PerFaceAttributeHandle<int> partOf;
+    if (parts)
+        partOf = facePartHandle(m);
+    for (const Component<MeshType>& c : connectedComponents(m)) {
+        if (c.size() < minSize) {
+            ++stats.removedComponents;
+            stats.largestRemovedComponent = std::max(stats.largestRemovedComponent, c.size());
+            continue;
+        }
+        const auto* first = c.faces.front();
+        boxes.push_back({c.box, parts ? partOf[first] : 0,
+                         vcg::tri::HasPerFaceColor(m) ? first->cC() : vcg::Color4b(vcg::Color4b::Gray)});
+    }
+    for (auto& f : m.face)
+        if (!f.IsD())
+            vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
+    for (auto& v : m.vert)
+        if (!v.IsD())
+            vcg::tri::Allocator<MeshType>::DeleteVertex(m, v);
+    vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
+    for (const Box& b : boxes)
+        appendBox(m, b.box, b.part, b.color);
+}
+
+}  // namespace detail
+
+// `newLevel(k)` returns an empty mesh for level k (k >= 1), as for buildLodSet; `scratch`
+// is an empty mesh with what cadlod::simplify needs, simplified level after level and
+// left in an unspecified state. The result has the same form as buildLodSet's;
+// result.steps holds, per kept level, the collapse statistics up to it, whose `relaxed`
+// lines say what gave way since the level before.
+template <class MeshType>
+LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChainOptions& options,
+                           const std::function<MeshType&(int)>& newLevel, vcg::CallBackPos* progress = nullptr)
+{
+    LodSetResult result;
+    const ViewParams& view = options.view;
+    if (!(view.fovYDegrees > 0 && view.fovYDegrees < 180) || !(view.viewportHeightPx >= 1) ||
+        !(view.pixelThreshold > 0) || !(options.distanceRatio > 1) || !(options.proxyPixels > 0)) {
+        result.error = "the field of view must be in (0, 180) degrees, the viewport at least 1 px, the pixel error "
+                       "and the proxy size positive, and the distance ratio above 1";
+        return result;
+    }
+
+    LodLevel level0;
+    level0.setId = options.setId;
+    level0.faces = original.fn;
+    const vcg::Box3d box = liveVertexBox(original);
+    if (box.IsNull() || original.fn == 0) {
+        result.error = "the mesh has no faces";
+        return result;
+    }
+    level0.center = {box.Center()[0], box.Center()[1], box.Center()[2]};
+    result.modelSize = box.Diag();
+    result.levels.push_back(level0);
+    result.compactness.push_back(meshCompactness(original));
+    std::vector<MeshType*> meshes{&original};
+
+    const std::size_t samples =
+        options.hausdorffSamples ? options.hausdorffSamples : std::clamp<std::size_t>(std::size_t(original.fn), 100000, 500000);
+    // Level 0's index for the points of the coarser levels, built once.
+    detail::ClosestFace<MeshType> toOriginal(original);
+    auto measure = [&](MeshType& mesh) {
+        SymmetricHausdorff h;
+        h.forward = oneSidedHausdorff(original, mesh, samples, 1);
+        h.backward = oneSidedHausdorff(mesh, toOriginal, std::min(samples, kBackwardSamplesPerFace * std::size_t(mesh.fn)), 2);
+        h.diagonal = result.modelSize;
+        return h;
+    };
+    auto addLevel = [&](MeshType& mesh, const SimplifyStats& stats) {
+        const SymmetricHausdorff h = measure(mesh);
+        LodLevel level = level0;
+        level.level = int(result.levels.size());
+        level.faces = mesh.fn;
+        level.reduction = 1.0 - double(mesh.fn) / original.fn;
+        level.hausdorffMax = h.max();
+        level.hausdorffMean = h.mean();
+        result.levels.push_back(level);
+        result.distance.push_back(h);
+        result.compactness.push_back(meshCompactness(mesh));
+        result.steps.push_back(stats);
+        meshes.push_back(&mesh);
+        return h.max();
+    };
+
+    // The working mesh: simplified level after level by one collapse session.
+    detail::copyWithParts(working, original);
+    vcg::tri::Allocator<MeshType>::CompactEveryVector(working);
+    SimplifyParams params = options.simplify;
+    params.targetFaces = 0;
+    params.reductionPerc = 0.0;
+    params.maxError = 1.0;  // set per level below; here only to pass validation
+    SimplifyStats stats;
+    stats.facesBefore = working.fn;
+    std::string why;
+    if (!detail::validateParams(params, why)) {
+        result.error = why;
+        return result;
+    }
+    CollapseContext<MeshType> ctx;
+    if (!prepareCollapse(working, params, ctx, stats)) {
+        releaseCollapse(working, ctx);
+        result.error = "the mesh has no extent (all vertices coincide or are not finite)";
+        return result;
+    }
+    stats.ok = true;
+
+    const double dFill = detail::distanceForPixels(result.modelSize, view.viewportHeightPx, view);
+    const double dProxy = detail::distanceForPixels(result.modelSize, options.proxyPixels, view);
+    const int plannedLevels =
+        std::max(1, int(std::ceil(std::log(dProxy * kCloseUpFactor / dFill) / std::log(options.distanceRatio))));
+    // How much the measured Hausdorff distance exceeds the largest collapse error (an RMS
+    // distance to the merged planes), learnt level by level.
+    double hausdorffPerCollapseError = 2.0;
+    int k = 0;
+    for (double d = dFill / kCloseUpFactor; d < dProxy; d *= options.distanceRatio, ++k) {
+        const double budget = detail::errorBudgetAt(d, view);
+        if (progress)
+            progress(100 * k / (plannedLevels + 1), ("Simplifying for " + std::to_string(d) + " units").c_str());
+        ctx.maxErrorAbs = budget / hausdorffPerCollapseError;
+        stats.targetFaces = 0;
+        stats.errorBound = ctx.maxErrorAbs;
+        const int before = working.fn;
+        collapseToTarget(working, ctx, stats, nullptr);
+        const int previous = result.levels.back().faces;
+        if (working.fn >= before || working.fn > 0.9 * previous)
+            continue;  // too little lighter than the last level to be worth one
+        MeshType& mesh = newLevel(int(result.levels.size()));
+        detail::copyWithParts(mesh, working);
+        vcg::tri::Allocator<MeshType>::CompactEveryVector(mesh);
+        stats.facesAfter = mesh.fn;
+        stats.largestError = ctx.largestError;
+        const double measured = addLevel(mesh, stats);
+        stats.relaxed.clear();
+        if (measured > 0 && ctx.largestError > 0)
+            hausdorffPerCollapseError = std::clamp(measured / ctx.largestError, 1.0, 20.0);
+    }
+    releaseCollapse(working, ctx);
+
+    // The proxy, when it is lighter than the last level.
+    stats.errorBound = detail::errorBudgetAt(dProxy, view);
+    detail::boxProxy(working, stats.errorBound, stats);
+    if (working.fn > 0 && working.fn < result.levels.back().faces) {
+        if (progress)
+            progress(100 * plannedLevels / (plannedLevels + 1), "Measuring the box proxy");
+        MeshType& proxy = newLevel(int(result.levels.size()));
+        detail::copyWithParts(proxy, working);
+        stats.facesAfter = proxy.fn;
+        stats.relaxed.push_back("box proxy: one box per connected component (" + std::to_string(proxy.fn / 12) +
+                                " boxes)");
+        addLevel(proxy, stats);
+    }
+
+    detail::keepUsefulLevels(result, meshes);
+    const double errorFloor = std::max(kRelativeErrorFloor * result.modelSize, 1e-12);
+    assignSwitchDistances(result.levels, result.modelSize, view, errorFloor);
+    result.levels.back().switchIn =
+        options.cullPixels > 0
+            ? std::max(result.levels.back().switchOut,
+                       detail::distanceForPixels(result.modelSize, options.cullPixels, view))
+            : kNeverCulled;
+    for (std::size_t i = 0; i < meshes.size(); ++i)
+        lodLevelHandle(*meshes[i])() = result.levels[i];
+    if (progress)
+        progress(100, "LOD chain done");
+    return result;
+}
+
+}  // namespace cadlod
