@@ -59,13 +59,11 @@ struct Row {
 bool measureQuality = true;
 
 // A stepped shaft (centre-drilled ends) tessellated like a CAD exporter with about
-// `triangles` triangles: a finer chord tolerance (segments ~ sqrt(size)) and more rings
-// along the cylinders (a maximum edge length) as it grows.
+// `triangles` triangles (cad_meshes.h's shaftSpecForTriangles).
 MeshSpec shaft(int triangles)
 {
-    const double scale = std::sqrt(triangles / 24000.0);
-    const int segments = int(std::lround(1200 * scale));
-    const int rings = std::max(1, int(std::lround((double(triangles) / segments - 14) / 6)));
+    const cadlod::test::RevolveSpec spec = cadlod::test::shaftSpecForTriangles(triangles);
+    const int segments = spec.segments, rings = spec.cylinderRings;
     auto build = [](TestMesh& m, int segments, int rings) {
         cadlod::test::CadBuilder b;
         cadlod::test::revolve(b, cadlod::test::shaftProfile(2.0), cadlod::test::shaftSpec(segments, rings));

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Builds chain_bench (build-bench/) and runs it on the demo assembly, the generated bench
+# assembly and board, and the KiCad VRML exports of the CAD corpus (made by
+# scripts/make_cad_corpus.sh when missing); writes the table and one plot of triangles
+# against distance per mesh (gnuplot, both chains).
+#   bench/lod/run_chains.sh [OUTDIR]        (default out/chains)
+set -euo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+out="${1:-$ROOT/out/chains}"
+mkdir -p "$out"
+corpus="$ROOT/.cache/cad-corpus"
+[ -f "$corpus/manifest.txt" ] || bash "$ROOT/scripts/make_cad_corpus.sh" "$corpus"
+build="${CADLOD_BENCH_BUILD_DIR:-$ROOT/build-bench}"
+cmake -S "$ROOT" -B "$build" -G Ninja -DCADLOD_BUILD_BENCH=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+cmake --build "$build" -j 2 --target chain_bench
+mapfile -t wrl < <(find "$corpus" -name '*.wrl' | sort)
+{
+  echo "Command: bench/lod/run_chains.sh; cadlod at $(git -C "$ROOT" rev-parse --short HEAD), $(date -u +%Y-%m-%d)."
+  echo
+  "$build/bench/lod/chain_bench" --assembly-segments 256 --plot "$out" \
+    "$ROOT/docs/sample/cad_assembly.wrl.gz" "${wrl[@]}"
+} | tee "$out/chains.md"
+bash "$ROOT/bench/lod/plot_chains.sh" "$out"
