@@ -40,12 +40,12 @@ void cleanUp(MeshFilterInterface& plugin, MeshModel& m)
 
 void cadSimplifyParameters(MeshModel& m, RichParameterList& par)
 {
-    const SimplifyParams d;
-    const int half = (m.cm.sfn > 0 ? m.cm.sfn : m.cm.fn) / 2;
-    par.addParam(RichInt("targetFaces", half, "Target number of faces",
-                         "Stop at this many faces (0: not used). With several stop criteria, the first met wins."));
-    par.addParam(RichFloat("reductionPerc", 0, "Reduction (%)",
-                           "If non-zero, stop after removing this percentage of the faces (90 keeps 10 %)."));
+    // The defaults do not depend on the mesh, so that a script gives in meshlabserver what
+    // the same values give in the GUI.
+    par.addParam(RichInt("targetFaces", 0, "Target number of faces",
+                         "Stop at this many faces; used when Reduction is 0."));
+    par.addParam(RichFloat("reductionPerc", 50, "Reduction (%)",
+                           "Stop after removing this % of the faces (90 keeps 10 %); wins over the face count."));
     par.addParam(RichFloat("maxError", 0, "Max error (fraction of bbox diagonal)",
                            "If non-zero, no collapse moves the surface further than this (RMS distance to the "
                            "original planes it replaces), e.g. 0.0001 = 0.01 % of the diagonal."));
@@ -70,6 +70,8 @@ bool cadSimplify(MeshFilterInterface& plugin, MeshModel& m, const RichParameterL
     }
     if (!s.message.empty())
         plugin.Log("CAD Quadric Edge Collapse on %s: %s", qUtf8Printable(m.label()), s.message.c_str());
+    for (const std::string& step : s.relaxed)
+        plugin.Log("CAD Quadric Edge Collapse on %s: relaxed: %s", qUtf8Printable(m.label()), step.c_str());
     if (par.getBool("autoClean"))
         cleanUp(plugin, m);
     // A level of an LOD set simplified again no longer matches its record (faces, error,
@@ -87,16 +89,19 @@ bool cadSimplify(MeshFilterInterface& plugin, MeshModel& m, const RichParameterL
     vcg::tri::UpdateNormal<CMeshO>::NormalizePerVertex(m.cm);
 
     const CompactnessStats after = meshCompactness(m.cm);
-    plugin.Log("CAD Quadric Edge Collapse on %s: %d -> %d faces (target %d) in %.3f s, %d collapses",
-               qUtf8Printable(m.label()), s.facesBefore, m.cm.fn, s.targetFaces, s.seconds, s.collapses);
+    plugin.Log("CAD Quadric Edge Collapse on %s: %d -> %d faces (target %d) in %.3f s, %d collapses; stopped by: %s",
+               qUtf8Printable(m.label()), s.facesBefore, m.cm.fn, s.targetFaces, s.seconds, s.collapses,
+               s.stoppedBy.c_str());
     plugin.Log("Compactness mean %.4f -> %.4f, p5 %.4f -> %.4f, below 0.1: %.2f%% -> %.2f%%", before.mean,
                after.mean, before.p5, after.p5, 100 * before.shareBelow01, 100 * after.shareBelow01);
     plugin.Log("Largest collapse error %.6g (%.5f%% of the bbox diagonal %.6g)", s.largestError,
                100 * s.largestErrorFraction(), s.diagonal);
-    plugin.Log("Features: %d creases/part borders, %d boundary edges, %d non-manifold edges and %d degenerate "
-               "faces (their vertices locked); refused: %d flips, %d shape, %d feature, %d error, %d topology",
-               s.featureEdges, s.boundaryEdges, s.nonManifoldEdges, s.degenerateFaces, s.rejectedFlip,
-               s.rejectedCompactness, s.rejectedFeature, s.rejectedError, s.rejectedTopology);
+    plugin.Log("Features: %d creases/part borders, %d boundary edges, %d non-manifold edges (locked); %d faces "
+               "repeating a vertex deleted; %d collapses broke a feature, %d parts removed whole; refused: %d flips, "
+               "%d shape, %d feature, %d error, %d topology",
+               s.featureEdges, s.boundaryEdges, s.nonManifoldEdges, s.degenerateFaces, s.featureBreaks,
+               s.removedComponents, s.rejectedFlip, s.rejectedCompactness, s.rejectedFeature, s.rejectedError,
+               s.rejectedTopology);
     return true;
 }
 

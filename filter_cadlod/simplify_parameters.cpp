@@ -39,6 +39,15 @@ void addPlacementParameters(RichParameterList& par)
                           "Tiny extra quadrics on every edge: steadier flat regions."));
     par.addParam(RichBool("keepPartBorders", d.keepPartBorders, "Keep part borders",
                           "Edges between faces of different CAD parts (cadlod_part attribute) are features."));
+    par.addParam(RichBool("keepColorBorders", d.keepColorBorders, "Keep colour borders",
+                          "Edges between faces of different colours (materials) are features; ignored when "
+                          "the faces have more than 256 colours (a painted measure)."));
+    par.addParam(RichFloat("featurePenalty", d.featurePenalty, "Feature penalty",
+                           "A collapse that breaks a feature (crease, corner, boundary, border) runs only when "
+                           "it costs this many times less than the alternatives. 0: features never give way."));
+    par.addParam(RichBool("relaxToReachTarget", d.relaxToReachTarget, "Reach the target",
+                          "When the face target is blocked: allow less compact triangles, and remove the "
+                          "smallest separate parts whole when cheaper; each step is logged."));
 }
 
 void readPlacementParameters(const RichParameterList& par, SimplifyParams& p)
@@ -57,6 +66,9 @@ void readPlacementParameters(const RichParameterList& par, SimplifyParams& p)
     p.qualityThreshold = par.getFloat("qualityThreshold");
     p.planarQuadric = par.getBool("planarQuadric");
     p.keepPartBorders = par.getBool("keepPartBorders");
+    p.keepColorBorders = par.getBool("keepColorBorders");
+    p.featurePenalty = par.getFloat("featurePenalty");
+    p.relaxToReachTarget = par.getBool("relaxToReachTarget");
 }
 
 }  // namespace cadlod

@@ -37,7 +37,7 @@ TEST(SimplifyFilter, MlxScriptMeetsTheTargetFaceCount)
     const std::string in = saveShaft(dir, faces);
     const int target = faces / 10;
     writeText(dir + "/simplify.mlx",
-              mlxScript({mlxFilter(kFilter, {mlxParam("RichInt", "targetFaces", std::to_string(target))})}));
+              mlxScript({mlxFilter(kFilter, {mlxParam("RichInt", "targetFaces", std::to_string(target)), mlxParam("RichFloat", "reductionPerc", "0")})}));
     const ServerRun run = runMeshlabServer({"-i", in, "-o", dir + "/out.ply", "-s", dir + "/simplify.mlx"});
     ASSERT_TRUE(run.ok()) << run.output;
 
