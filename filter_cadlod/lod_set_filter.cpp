@@ -1,6 +1,7 @@
 #include "lod_set_filter.h"
 
 #include "core/lod_builder.h"
+#include "core/lod_chain.h"
 #include "simplify_parameters.h"
 
 #include <QElapsedTimer>
@@ -17,43 +18,81 @@ int nextSetId(MeshDocument& md)
     return id + 1;
 }
 
-LodSetOptions readOptions(const RichParameterList& par)
+bool chainMode(const RichParameterList& par) { return par.getEnum("levelMode") == 0; }
+
+ViewParams readView(const RichParameterList& par)
+{
+    ViewParams v;
+    v.fovYDegrees = par.getFloat("fovY");
+    v.viewportHeightPx = par.getInt("viewportHeight");
+    v.pixelThreshold = par.getFloat("pixelError");
+    return v;
+}
+
+LodSetOptions readListOptions(const RichParameterList& par)
 {
     LodSetOptions o;
     o.levels = par.getString("levels").toStdString();
     o.spec = par.getEnum("levelUnit") == 0 ? LevelSpec::ReductionPercent : LevelSpec::FaceCount;
     o.fromOriginal = par.getBool("fromOriginal");
-    o.view.fovYDegrees = par.getFloat("fovY");
-    o.view.viewportHeightPx = par.getInt("viewportHeight");
-    o.view.pixelThreshold = par.getFloat("pixelError");
+    o.view = readView(par);
     o.hausdorffSamples = std::size_t(std::max(0, par.getInt("samples")));
     readPlacementParameters(par, o.simplify);
     return o;
 }
 
-QString validateView(const LodSetOptions& o)
+LodChainOptions readChainOptions(const RichParameterList& par)
 {
-    if (!(o.view.fovYDegrees > 0 && o.view.fovYDegrees < 180))
+    LodChainOptions o;
+    o.view = readView(par);
+    o.distanceRatio = par.getFloat("distanceRatio");
+    o.proxyPixels = par.getFloat("proxyPixels");
+    o.cullPixels = par.getFloat("cullPixels");
+    o.hausdorffSamples = std::size_t(std::max(0, par.getInt("samples")));
+    readPlacementParameters(par, o.simplify);
+    return o;
+}
+
+QString validateView(const ViewParams& v)
+{
+    if (!(v.fovYDegrees > 0 && v.fovYDegrees < 180))
         return "the vertical field of view must be between 0 and 180 degrees";
-    if (o.view.viewportHeightPx < 1)
+    if (v.viewportHeightPx < 1)
         return "the viewport height must be at least one pixel";
-    if (!(o.view.pixelThreshold > 0))
+    if (!(v.pixelThreshold > 0))
         return "the pixel error must be positive";
     return {};
 }
 
-void logTable(MeshFilterInterface& plugin, const LodSetResult& r, double seconds)
+// A level's error in pixels where it is switched in (0 for level 0).
+double pixelsAtSwitchIn(const LodLevel& l, const ViewParams& view)
 {
-    plugin.Log("CAD LOD set: %d levels in %.2f s (model size %.6g, errors in model units)",
+    if (!(l.switchOut > 0))
+        return 0.0;
+    return l.hausdorffMax * view.viewportHeightPx /
+           (2.0 * l.switchOut * std::tan(0.5 * view.fovYDegrees * M_PI / 180.0));
+}
+
+QString distanceText(double d) { return d >= kNeverCulled ? QString("infinity") : QString::number(d, 'g', 4); }
+
+// One line per level, words and numbers only: MeshLab's log is HTML, where aligned columns
+// collapse and a '<' starts a tag.
+void logLevels(MeshFilterInterface& plugin, const LodSetResult& r, const ViewParams& view, double seconds)
+{
+    plugin.Log("CAD LOD set: %d levels in %.2f s; model size %.6g (errors and distances in model units)",
                int(r.levels.size()), seconds, r.modelSize);
-    plugin.Log("level  reduction  triangles  hausdorff max  (% diag)  mean  switch out..in  compactness mean  <0.1");
     for (std::size_t k = 0; k < r.levels.size(); ++k) {
         const LodLevel& l = r.levels[k];
         const CompactnessStats& c = r.compactness[k];
-        plugin.Log("%5d  %8.1f%%  %9d  %13.6g  (%6.3f%%)  %.6g  %.6g..%.6g  %.3f  %.1f%%", l.level,
-                   100.0 * l.reduction, l.faces, l.hausdorffMax,
-                   r.modelSize > 0 ? 100.0 * l.hausdorffMax / r.modelSize : 0.0, l.hausdorffMean,
-                   l.switchOut, l.switchIn, c.mean, 100.0 * c.shareBelow01);
+        plugin.Log("LOD%d: %d faces (%.2f %% of level 0), error %.4g = %.4f %% of the size = %.2f px at switch-in, "
+                   "drawn from %s to %s, compactness mean %.3f, slivers %.1f %%",
+                   l.level, l.faces, r.levels[0].faces ? 100.0 * l.faces / r.levels[0].faces : 0.0, l.hausdorffMax,
+                   r.modelSize > 0 ? 100.0 * l.hausdorffMax / r.modelSize : 0.0, pixelsAtSwitchIn(l, view),
+                   qUtf8Printable(distanceText(l.switchOut)), qUtf8Printable(distanceText(l.switchIn)), c.mean,
+                   100.0 * c.shareBelow01);
+        if (k > 0)
+            for (const std::string& step : r.steps[k - 1].relaxed)
+                plugin.Log("LOD%d: %s", l.level, step.c_str());
     }
 }
 
@@ -61,24 +100,30 @@ void logTable(MeshFilterInterface& plugin, const LodSetResult& r, double seconds
 
 void lodSetParameters(MeshModel&, RichParameterList& par)
 {
-    par.addParam(RichString("levels", "50 60 70 80 90", "Levels",
-                            "One value per level, coarser each time: reductions in % of the "
-                            "original's faces (the paper uses 50 60 70 80 90) or face counts."));
-    par.addParam(RichEnum("levelUnit", 0, {"Reduction %", "Face count"}, "Level unit",
-                          "How the values in Levels are read."));
-    par.addParam(RichBool("fromOriginal", false, "Simplify each level from the original",
-                          "Off: level k is made from level k-1 (faster). On: every level is "
-                          "made from the original."));
+    const LodChainOptions chain;
+    par.addParam(RichEnum("levelMode", 0, {"By screen-space error (VR)", "Level list (the paper)"}, "Levels by",
+                          "Screen-space error: levels from close up to a few pixels high, each where its "
+                          "measured error is below the pixel error. Level list: the values below."));
+    par.addParam(RichString("levels", "50 60 70 80 90", "Level list",
+                            "With Level list: one value per level, coarser each time (the paper: 50 60 70 80 90)."));
+    par.addParam(RichEnum("levelUnit", 0, {"Reduction %", "Face count"}, "Level list unit",
+                          "How the values of the level list are read."));
+    par.addParam(RichBool("fromOriginal", false, "List levels from the original",
+                          "With Level list: simplify every level from the original (slower)."));
     par.addParam(RichFloat("fovY", 45.0f, "Vertical field of view (deg)",
                            "Camera of the simulator, for the switch distances."));
     par.addParam(RichInt("viewportHeight", 1080, "Viewport height (px)",
                          "Screen height of the simulator, for the switch distances."));
     par.addParam(RichFloat("pixelError", 1.0f, "Pixel error",
-                           "A level is switched in once its geometric error (symmetric Hausdorff "
-                           "distance to the original) projects to fewer pixels than this."));
+                           "A level is drawn only where its measured error is smaller than this on screen."));
+    par.addParam(RichFloat("distanceRatio", float(chain.distanceRatio), "Distance ratio",
+                           "Screen-space error: each level serves this many times farther than the one before."));
+    par.addParam(RichFloat("proxyPixels", float(chain.proxyPixels), "Proxy size (px)",
+                           "Screen-space error: below this height on screen, one box per part stands in."));
+    par.addParam(RichFloat("cullPixels", float(chain.cullPixels), "Cull below (px)",
+                           "Not drawn when smaller than this on screen; 0: always drawn."));
     par.addParam(RichInt("samples", 0, "Hausdorff samples",
-                         "Surface samples per side for the error of each level; 0 = as many "
-                         "as the original has faces."));
+                         "Surface samples per side to measure each level; 0: automatic."));
     addPlacementParameters(par);
 }
 
@@ -86,15 +131,15 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
                     vcg::CallBackPos* cb, QString& error)
 {
     MeshModel& original = *md.mm();
-    LodSetOptions options = readOptions(par);
-    error = validateView(options);
+    const ViewParams view = readView(par);
+    error = validateView(view);
     if (!error.isEmpty())
         return false;
+    const int setId = nextSetId(md);
     if (original.cm.fn == 0) {
         error = "the current layer has no faces";
         return false;
     }
-    options.setId = nextSetId(md);
     const QString baseName = QFileInfo(original.label()).completeBaseName();
     std::vector<MeshModel*> layers;
     // A layer that already belongs to a set (level 0 of an earlier run, or one of its
@@ -107,7 +152,7 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
         vcg::tri::UpdateBounding<CMeshO>::Box(level0->cm);
         layers.push_back(level0);
         plugin.Log("CAD LOD set: %s already belongs to LOD set %d; LOD set %d starts from a copy of it (%s)",
-                   qUtf8Printable(original.label()), lodLevelHandle(original.cm)().setId, options.setId,
+                   qUtf8Printable(original.label()), lodLevelHandle(original.cm)().setId, setId,
                    qUtf8Printable(level0->label()));
     }
     level0->updateDataMask(MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK);
@@ -124,7 +169,21 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
 
     QElapsedTimer timer;
     timer.start();
-    const LodSetResult result = buildLodSet<CMeshO>(level0->cm, options, newLevel, cb);
+    LodSetResult result;
+    if (chainMode(par)) {
+        LodChainOptions options = readChainOptions(par);
+        options.setId = setId;
+        // The chain simplifies a scratch copy level after level; a layer has what it needs.
+        MeshModel* scratch = md.addNewMesh("", QString("%1 scratch").arg(baseName), false);
+        scratch->updateDataMask(level0);
+        scratch->updateDataMask(MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK);
+        result = buildLodChain<CMeshO>(level0->cm, scratch->cm, options, newLevel, cb);
+        md.delMesh(scratch);
+    } else {
+        LodSetOptions options = readListOptions(par);
+        options.setId = setId;
+        result = buildLodSet<CMeshO>(level0->cm, options, newLevel, cb);
+    }
     if (!result.ok()) {
         for (MeshModel* layer : layers)
             md.delMesh(layer);
@@ -144,10 +203,14 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
     for (const std::string& warning : result.warnings)
         plugin.Log(GLLogStream::WARNING, "CAD LOD set: %s", warning.c_str());
     for (std::size_t k = 0; k < kept.size(); ++k) {
-        kept[k]->setLabel(QString("%1 LOD%2 (%3 faces)").arg(baseName).arg(k + 1).arg(kept[k]->cm.fn));
+        const LodLevel& l = result.levels[k + 1];
+        kept[k]->setLabel(QString("%1 LOD%2 drawn %3 to %4")
+                              .arg(baseName)
+                              .arg(k + 1)
+                              .arg(distanceText(l.switchOut), distanceText(l.switchIn)));
         kept[k]->UpdateBoxAndNormals();
     }
-    logTable(plugin, result, timer.elapsed() / 1000.0);
+    logLevels(plugin, result, view, timer.elapsed() / 1000.0);
     return true;
 }
 

@@ -121,7 +121,7 @@ cadlod_simplify() {
       CAD_ROUTE="MeshLab filter \"$CAD_FILTER\" (defaults but the stop criterion: reduction %)" || rm -f "$out"
   fi
   if [ ! -s "$out" ] && has_filter "$LOD_FILTER" &&
-    single_filter_mlx "$script" "$LOD_FILTER" "<Param type=\"RichString\" name=\"levels\" value=\"$pct\"/>"; then
+    single_filter_mlx "$script" "$LOD_FILTER" "<Param type=\"RichEnum\" name=\"levelMode\" enum_cardinality=\"2\" value=\"1\" enum_val0=\"By screen-space error (VR)\" enum_val1=\"Level list (the paper)\"/><Param type=\"RichString\" name=\"levels\" value=\"$pct\"/>"; then
     mls -i "$in" -s "$script" -o "$out" -l 1 -m vn fc &&
       CAD_ROUTE="MeshLab filter \"$LOD_FILTER\" with one level (defaults but the levels), as the plugin has no \"$CAD_FILTER\"" ||
       rm -f "$out"

@@ -14,6 +14,12 @@ namespace {
 
 const char* const kLodFilter = "Generate CAD LOD Set";
 
+// The LOD-set filter's parameters for the paper's kind of set: a level list.
+std::vector<std::string> listLevels(const std::string& levels)
+{
+    return {mlxParam("RichEnum", "levelMode", "1"), mlxParam("RichString", "levels", levels)};
+}
+
 bool lodFilterAvailable()
 {
     const std::string dump = scratchDir("flt_lod_set") + "/filters.txt";
@@ -32,7 +38,7 @@ TEST(FltLodSet, WholeSetIsWrittenWithItsSwitchDistances)
     makeTorusMesh(torus);
     ASSERT_TRUE(savePly(dir + "/torus.ply", torus, vcg::tri::io::Mask::IOM_VERTNORMAL));
     writeText(dir + "/lods.mlx",
-              mlxScript({mlxFilter(kLodFilter, {mlxParam("RichString", "levels", "50 75")})}));
+              mlxScript({mlxFilter(kLodFilter, listLevels("50 75"))}));
     const std::string flt = dir + "/torus.flt";
     const ServerRun run = runMeshlabServer({"-i", dir + "/torus.ply", "-s", dir + "/lods.mlx", "-o", flt}, 300);
     ASSERT_TRUE(run.ok()) << run.output;
@@ -71,7 +77,7 @@ TEST(FltLodSet, CadAssemblyKeepsItsPartsInEveryLevel)
                                       << "\": the filter_cadlod plugin is missing or failed to load";
     const std::string dir = scratchDir("flt_lod_set_assembly");
     writeText(dir + "/lods.mlx",
-              mlxScript({mlxFilter(kLodFilter, {mlxParam("RichString", "levels", "50 80")})}));
+              mlxScript({mlxFilter(kLodFilter, listLevels("50 80"))}));
     const std::string flt = dir + "/assembly.flt";
     const ServerRun run = runMeshlabServer(
         {"-i", std::string(CADLOD_SOURCE_DIR) + "/docs/sample/cad_assembly.wrl.gz", "-s", dir + "/lods.mlx", "-o", flt},
@@ -119,8 +125,8 @@ TEST(FltLodSet, SecondSetFromTheSameLayerLeavesTheFirstSetWhole)
     ASSERT_TRUE(savePly(dir + "/torus.ply", torus, vcg::tri::io::Mask::IOM_VERTNORMAL));
     // Layer 1 is the first set's level 1 whatever the second set adds after it.
     writeText(dir + "/twice.mlx",
-              mlxScript({mlxFilter(kLodFilter, {mlxParam("RichString", "levels", "50")}),
-                         mlxFilter(kLodFilter, {mlxParam("RichString", "levels", "75")}), currentLayer(1)}));
+              mlxScript({mlxFilter(kLodFilter, listLevels("50")),
+                         mlxFilter(kLodFilter, listLevels("75")), currentLayer(1)}));
     const std::string flt = dir + "/first_set.flt";
     const ServerRun run = runMeshlabServer({"-i", dir + "/torus.ply", "-s", dir + "/twice.mlx", "-o", flt}, 300);
     ASSERT_TRUE(run.ok()) << run.output;
@@ -144,8 +150,8 @@ TEST(FltLodSet, ALevelSimplifiedAgainLeavesItsSet)
     ASSERT_TRUE(savePly(dir + "/torus.ply", torus, vcg::tri::io::Mask::IOM_VERTNORMAL));
     const int target = torus.fn / 4;
     writeText(dir + "/again.mlx",
-              mlxScript({mlxFilter(kLodFilter, {mlxParam("RichString", "levels", "50")}), currentLayer(1),
-                         mlxFilter(kSimplifyFilter, {mlxParam("RichInt", "targetFaces", std::to_string(target))})}));
+              mlxScript({mlxFilter(kLodFilter, listLevels("50")), currentLayer(1),
+                         mlxFilter(kSimplifyFilter, {mlxParam("RichInt", "targetFaces", std::to_string(target)), mlxParam("RichFloat", "reductionPerc", "0")})}));
     const std::string flt = dir + "/level.flt";
     const ServerRun run = runMeshlabServer({"-i", dir + "/torus.ply", "-s", dir + "/again.mlx", "-o", flt}, 300);
     ASSERT_TRUE(run.ok()) << run.output;
