@@ -31,7 +31,7 @@ millis=$(( ($(date +%s%N) - start) / 1000000 ))
 
 echo "== summary"
 grep -E "^io_vrml_flt: VRML" "$LOG" | sed 's/^io_vrml_flt: /  import: /'
-grep -E "^LOG: [0-9] CAD LOD set|^LOG: [0-9] +(level|[0-9]+ )" "$LOG" | sed 's/^LOG: [0-9] /  /'
+grep -E "^LOG: [0-9] (CAD LOD set|LOD[0-9]+:)" "$LOG" | sed 's/^LOG: [0-9] /  /'
 grep -E "^io_vrml_flt: OpenFlight" "$LOG" | sed 's/^io_vrml_flt: /  export: /'
 echo
 echo "== OpenSceneGraph reads $FLT (switch ranges in meters)"
