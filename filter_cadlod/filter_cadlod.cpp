@@ -53,14 +53,9 @@ QString FilterCadLodPlugin::filterInfo(FilterIDType filter) const
                "triangle's compactness as face quality, so the quality color mapper shows where "
                "the error and the slivers are.";
     case FP_LOD_SET:
-        return "Builds levels of detail of the current layer with the CAD Quadric Edge Collapse, one new "
-               "layer per level, each measured against the original (symmetric Hausdorff distance) and "
-               "drawn only where that error is smaller than the pixel error on screen. By default the "
-               "levels follow the screen-space error, from close up to where the model is a few pixels "
-               "high (features, part borders and small parts give way as far as the error allows; "
-               "the last level is a box per part); the paper's list of reductions (50 60 70 80 90 %) "
-               "is the other choice. Saving any layer of the set as OpenFlight (.flt) writes the whole "
-               "set as one LOD model. The log lists the levels and what gave way.";
+        return "One new layer per level of detail, each drawn only where its measured error is below "
+               "the pixel error on screen: by screen-space error down to a box per part, or the "
+               "paper's list. Saving a level as .flt writes the whole set (see the log).";
     }
     return {};
 }

@@ -73,7 +73,10 @@ double pixelsAtSwitchIn(const LodLevel& l, const ViewParams& view)
            (2.0 * l.switchOut * std::tan(0.5 * view.fovYDegrees * M_PI / 180.0));
 }
 
-QString distanceText(double d) { return d >= kNeverCulled ? QString("infinity") : QString::number(d, 'g', 4); }
+QString distanceText(double d, int digits = 4)
+{
+    return d >= kNeverCulled ? QString("inf") : QString::number(d, 'g', digits);
+}
 
 // One line per level, words and numbers only: MeshLab's log is HTML, where aligned columns
 // collapse and a '<' starts a tag.
@@ -124,7 +127,7 @@ void lodSetParameters(MeshModel&, RichParameterList& par)
                            "Not drawn when smaller than this on screen; 0: always drawn."));
     par.addParam(RichInt("samples", 0, "Hausdorff samples",
                          "Surface samples per side to measure each level; 0: automatic."));
-    addPlacementParameters(par);
+    addFeatureParameters(par);
 }
 
 bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichParameterList& par,
@@ -204,10 +207,10 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
         plugin.Log(GLLogStream::WARNING, "CAD LOD set: %s", warning.c_str());
     for (std::size_t k = 0; k < kept.size(); ++k) {
         const LodLevel& l = result.levels[k + 1];
-        kept[k]->setLabel(QString("%1 LOD%2 drawn %3 to %4")
+        kept[k]->setLabel(QString("%1 LOD%2 %3-%4")  // drawn from ... to ... (model units)
                               .arg(baseName)
                               .arg(k + 1)
-                              .arg(distanceText(l.switchOut), distanceText(l.switchIn)));
+                              .arg(distanceText(l.switchOut, 3), distanceText(l.switchIn, 3)));
         kept[k]->UpdateBoxAndNormals();
     }
     logLevels(plugin, result, view, timer.elapsed() / 1000.0);

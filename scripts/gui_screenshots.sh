@@ -18,7 +18,8 @@ SHAFT="$ROOT/docs/sample/shaft.wrl"
 Xvfb -displayfd 3 -screen 0 1280x900x24 -nolisten tcp -noreset 3>"$WORK/display" >/dev/null 2>&1 &
 XVFB=$!
 trap 'pkill -f "$STAGE/bin/meshlab " 2>/dev/null || true; kill $XVFB 2>/dev/null || true' EXIT
-for _ in $(seq 50); do [ -s "$WORK/display" ] && break; sleep 0.1; done
+for _ in $(seq 300); do [ -s "$WORK/display" ] && break; sleep 0.1; done  # a loaded machine takes seconds
+[ -s "$WORK/display" ] || { echo "Xvfb did not start" >&2; exit 1; }
 export DISPLAY=":$(tr -d '[:space:]' < "$WORK/display")"
 
 shot() { import -window root -crop 853x725+0+0 +repage "$OUT/gui-$1.png"; echo "wrote docs/img/gui-$1.png"; }
@@ -44,9 +45,9 @@ import -window root -crop 1280x900+0+0 +repage "$OUT/gui-remeshing-menu.png"; ec
 # 3. The LOD-set dialog, then its result: one layer per level and the level table in the log.
 click 430 237 2
 shot lod-set-dialog
-click 264 577 20
+click 309 625 20  # Apply
 shot lod-set-layers
-click 92 577
+click 108 625  # Close
 
 # 4. Filters > Quality Measure and Computations > Compute Triangle Compactness.
 open_submenu 261

@@ -11,7 +11,7 @@ for dat in "$dir"/*.dat; do
   gnuplot <<GP
 set terminal png size 900,500
 set output "$png"
-set title "Triangles drawn against distance: $title"
+set title "Triangles drawn against distance: $title" noenhanced
 set logscale xy
 set xlabel "distance / model diagonal"
 set ylabel "triangles drawn"

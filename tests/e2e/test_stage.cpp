@@ -43,12 +43,12 @@ TEST(MlxComplete, FillsEveryParameterInTheFiltersOrder)
     const std::string full = readText(dir + "/full.mlx");
     const std::size_t levels = full.find("name=\"levels\"");
     const std::size_t unit = full.find("name=\"levelUnit\"");
-    const std::size_t tie = full.find("name=\"tieTolerance\"");
+    const std::size_t feature = full.find("name=\"featureAngle\"");
     ASSERT_NE(levels, std::string::npos) << full;
     ASSERT_NE(unit, std::string::npos) << full;
-    ASSERT_NE(tie, std::string::npos) << full;
+    ASSERT_NE(feature, std::string::npos) << full;
     EXPECT_LT(levels, unit);
-    EXPECT_LT(unit, tie);
+    EXPECT_LT(unit, feature);
     EXPECT_NE(full.find("value=\"50 90\""), std::string::npos) << full;
 }
 
