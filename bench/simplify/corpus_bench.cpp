@@ -15,6 +15,7 @@
 #include "cad_meshes.h"
 #include "mesh_checks.h"
 #include "peer_cgal.h"
+#include "forked_run.h"
 #include "peer_meshopt.h"
 #include "stock_quadric.h"
 #include "test_mesh.h"
@@ -219,26 +220,7 @@ Row runOne(const PartContext& ctx, const std::string& tool, int reduction)
 
 Row runForked(const PartContext& ctx, const std::string& tool, int reduction)
 {
-    std::fflush(stdout);
-    int fds[2];
-    if (pipe(fds) != 0)
-        return {};
-    const pid_t pid = fork();
-    if (pid == 0) {
-        close(fds[0]);
-        const Row r = runOne(ctx, tool, reduction);
-        const ssize_t written = write(fds[1], &r, sizeof r);
-        _exit(written == ssize_t(sizeof r) ? 0 : 1);
-    }
-    close(fds[1]);
-    Row r;
-    const ssize_t got = read(fds[0], &r, sizeof r);
-    close(fds[0]);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    if (got != ssize_t(sizeof r))
-        r.ok = false;
-    return r;
+    return cadlod::bench::runForked<Row>([&] { return runOne(ctx, tool, reduction); });
 }
 
 std::set<std::string> heldOutIds(const std::string& manifest)

@@ -11,6 +11,7 @@
 #include "cad_meshes.h"
 #include "mesh_checks.h"
 #include "peer_cgal.h"
+#include "forked_run.h"
 #include "peer_meshopt.h"
 #include "stock_quadric.h"
 #include "test_mesh.h"
@@ -166,25 +167,7 @@ Row runOne(const MeshSpec& spec, const std::string& tool, int reduction)
 // In a child process, so that peak memory belongs to this run alone.
 Row runForked(const MeshSpec& spec, const std::string& tool, int reduction)
 {
-    int fds[2];
-    if (pipe(fds) != 0)
-        return {};
-    const pid_t pid = fork();
-    if (pid == 0) {
-        close(fds[0]);
-        const Row r = runOne(spec, tool, reduction);
-        const ssize_t written = write(fds[1], &r, sizeof r);
-        _exit(written == ssize_t(sizeof r) ? 0 : 1);
-    }
-    close(fds[1]);
-    Row r;
-    const ssize_t got = read(fds[0], &r, sizeof r);
-    close(fds[0]);
-    int status = 0;
-    waitpid(pid, &status, 0);
-    if (got != ssize_t(sizeof r))
-        r.ok = false;
-    return r;
+    return cadlod::bench::runForked<Row>([&] { return runOne(spec, tool, reduction); });
 }
 
 std::vector<std::string> split(const std::string& s)
