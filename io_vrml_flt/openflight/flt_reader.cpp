@@ -4,6 +4,7 @@
 #include "records.h"
 #include "triangle_strip.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -426,8 +427,10 @@ private:
             return;
         }
         setPartColorOnce(level, part, f.color);
-        for (std::size_t i = 1; i + 1 < corners.size(); ++i)
+        for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
             p.triangles.push_back({corners[0], corners[i], corners[i + 1]});
+            p.triangleColors.push_back(f.color);
+        }
     }
 
     // NaN or infinite coordinates cannot be placed: their faces are skipped and counted.
@@ -576,6 +579,7 @@ private:
                 continue;
             }
             p.triangles.push_back(mapped);
+            p.triangleColors.push_back(f.color);
             ++valid;
         }
         if (valid == 0)
@@ -583,13 +587,19 @@ private:
         return true;
     }
 
+    // Also drops the per-triangle colours of a part whose faces all have the part's colour.
     void dropEmptyParts()
     {
         for (Level& level : model_.levels) {
             std::vector<Part> kept;
-            for (Part& p : level.parts)
+            for (Part& p : level.parts) {
+                const bool uniform = std::all_of(p.triangleColors.begin(), p.triangleColors.end(),
+                                                 [&](const Rgba& c) { return c == p.color; });
+                if (uniform)
+                    p.triangleColors.clear();
                 if (!p.triangles.empty())
                     kept.push_back(std::move(p));
+            }
             level.parts = std::move(kept);
         }
     }
