@@ -40,6 +40,8 @@ mesh_io::LevelOptions levelOptions(MeshModel& mm, bool withUvs, bool faceColors)
     mesh_io::LevelOptions o;
     o.label = mm.label().toStdString();
     o.faceColors = faceColors && mm.hasDataMask(MeshModel::MM_FACECOLOR);
+    // Vertex colours only where the layer has them (a VRML file's per-vertex Color, a PLY's).
+    o.vertexColors = faceColors && mm.hasDataMask(MeshModel::MM_VERTCOLOR);
     o.uvs = withUvs && mm.hasDataMask(MeshModel::MM_VERTTEXCOORD);
     return o;
 }
@@ -95,8 +97,8 @@ void fltSaveParameters(MeshModel&, RichParameterList& par)
                           {"Mesh records (compact, fast to load)", "Face records (one per triangle)"},
                           "Geometry records",
                           "Mesh records are compact; Face records suit old tools."));
-    par.addParam(RichEnum(kColors, 0, {"Each face's colour", "One colour per part"}, "Colours",
-                          "Each face's own colour, or one colour per CAD part."));
+    par.addParam(RichEnum(kColors, 0, {"As the layer has them", "One colour per part"}, "Colours",
+                          "Face (and vertex) colours as the layer has them, or one per CAD part."));
     par.addParam(RichBool(kWholeSet, true, "Write the whole LOD set",
                           "Every level of the layer's LOD set, or only this layer."));
 }

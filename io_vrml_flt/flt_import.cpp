@@ -38,6 +38,10 @@ void fillLayer(const flt::Level& level, MeshModel& m, int& mask)
         mask |= vcg::tri::io::Mask::IOM_VERTNORMAL;
     if (uvs)
         mask |= vcg::tri::io::Mask::IOM_VERTTEXCOORD;
+    if (std::any_of(level.parts.begin(), level.parts.end(), [](const flt::Part& p) { return p.hasVertexColors(); })) {
+        m.updateDataMask(MeshModel::MM_VERTCOLOR);
+        mask |= vcg::tri::io::Mask::IOM_VERTCOLOR;
+    }
 }
 
 }  // namespace

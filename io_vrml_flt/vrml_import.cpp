@@ -88,7 +88,11 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     }
     vrml::Scene& scene = result.scene;
     const qint64 parsedMs = timer.elapsed();
-    mask = vcg::tri::io::Mask::IOM_VERTNORMAL | vcg::tri::io::Mask::IOM_VERTCOLOR | vcg::tri::io::Mask::IOM_FACECOLOR;
+    mask = vcg::tri::io::Mask::IOM_VERTNORMAL | vcg::tri::io::Mask::IOM_FACECOLOR;
+    // Vertex colours only when the file gives them (colorPerVertex): the layer then shows
+    // them and the OpenFlight export writes them; otherwise the face colours are the truth.
+    if (std::any_of(scene.parts.begin(), scene.parts.end(), [](const vrml::Part& p) { return !p.colors.empty(); }))
+        mask |= vcg::tri::io::Mask::IOM_VERTCOLOR;
     if (mesh_io::hasTexCoords(scene)) mask |= vcg::tri::io::Mask::IOM_WEDGTEXCOORD;
     m.Enable(mask);
     mesh_io::SceneToMeshOptions toMesh;

@@ -59,6 +59,7 @@ void levelToMesh(const flt::Level& level, Mesh& m)
                 v->N() = Point(part.normals[i][0], part.normals[i][1], part.normals[i][2]);
             if (uvs)
                 v->T() = vcg::TexCoord2f(part.uvs[i][0], part.uvs[i][1]);
+            v->C() = detail::toColor4b(part.hasVertexColors() ? part.vertexColors[i] : part.color);
         }
         auto f = vcg::tri::Allocator<Mesh>::AddFaces(m, part.triangles.size());
         for (std::size_t i = 0; i < part.triangles.size(); ++i) {

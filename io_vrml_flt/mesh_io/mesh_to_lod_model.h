@@ -23,6 +23,7 @@ namespace cadlod::mesh_io {
 struct LevelOptions {
     std::string label;        // names the parts of a mesh without a part table
     bool faceColors = false;  // write each face's colour (without a part table: parts by face colour)
+    bool vertexColors = false;  // write each vertex's colour (drawn instead of the face colours)
     bool uvs = false;         // write per-vertex texture coordinates
 };
 
@@ -147,6 +148,8 @@ flt::Level meshToLevel(Mesh& m, const LevelOptions& options, LevelStats& stats)
                 part.normals.push_back({n[0], n[1], n[2]});
                 if (options.uvs)
                     part.uvs.push_back({float(v.cT().U()), float(v.cT().V())});
+                if (options.vertexColors)
+                    part.vertexColors.push_back(detail::toRgba(v.cC()));
             }
             tri[k] = std::uint32_t(index[vi]);
         }

@@ -20,7 +20,10 @@ Appearance appearanceOf(const Part& part, const WriteOptions& options)
 {
     Appearance a;
     a.drawType = options.drawType;
-    a.lightMode = part.hasNormals() ? LightMode::FaceColorLit : LightMode::FaceColor;
+    if (part.hasVertexColors())
+        a.lightMode = part.hasNormals() ? LightMode::VertexColorLit : LightMode::VertexColor;
+    else
+        a.lightMode = part.hasNormals() ? LightMode::FaceColorLit : LightMode::FaceColor;
     a.color = part.color;
     return a;
 }
@@ -79,7 +82,8 @@ private:
             for (const Part& part : level.parts)
                 for (std::size_t v = 0; v < part.positions.size(); ++v)
                     writeVertex(w_, part.positions[v], part.hasNormals() ? &part.normals[v] : nullptr,
-                                part.hasUvs() ? &part.uvs[v] : nullptr);
+                                part.hasUvs() ? &part.uvs[v] : nullptr,
+                                part.hasVertexColors() ? &part.vertexColors[v] : nullptr);
     }
 
     void writeLevel(const Level& level, std::size_t index)
@@ -173,6 +177,8 @@ private:
                             sub.normals.push_back(part.normals[v]);
                         if (part.hasUvs())
                             sub.uvs.push_back(part.uvs[v]);
+                        if (part.hasVertexColors())
+                            sub.vertexColors.push_back(part.vertexColors[v]);
                     }
                     mapped[c] = std::uint32_t(local[v]);
                 }
@@ -188,7 +194,8 @@ private:
         appearance.color = color;
         writeMesh(w_, appearance);
         writeLocalVertexPool(w_, part.positions, part.hasNormals() ? part.normals : std::vector<Vec3f>{},
-                             part.hasUvs() ? part.uvs : std::vector<Vec2f>{});
+                             part.hasUvs() ? part.uvs : std::vector<Vec2f>{},
+                             part.hasVertexColors() ? part.vertexColors : std::vector<Rgba>{});
         writePush(w_);
         writeMeshPrimitive(w_, PrimitiveType::TriangleStrip, stitchedStrip(part.triangles));
         writePop(w_);
@@ -226,6 +233,11 @@ bool validatePart(const Part& part, const std::string& at, std::string& error)
     }
     if (!part.uvs.empty() && part.uvs.size() != part.positions.size()) {
         error = at + ": " + std::to_string(part.uvs.size()) + " texture coordinates for " +
+                std::to_string(part.positions.size()) + " vertices";
+        return false;
+    }
+    if (!part.vertexColors.empty() && part.vertexColors.size() != part.positions.size()) {
+        error = at + ": " + std::to_string(part.vertexColors.size()) + " vertex colours for " +
                 std::to_string(part.positions.size()) + " vertices";
         return false;
     }

@@ -30,6 +30,9 @@ struct Part : PartIdentity {
     std::vector<Vec2f> uvs;      // one per position, or empty
     std::vector<Triangle> triangles;
     std::vector<Rgba> triangleColors;  // one per triangle, or empty (all `color`)
+    std::vector<Rgba> vertexColors;    // one per position, or empty: drawn instead of face colours
+
+    bool hasVertexColors() const { return !positions.empty() && vertexColors.size() == positions.size(); }
 
     bool hasTriangleColors() const { return !triangles.empty() && triangleColors.size() == triangles.size(); }
     const Rgba& colorOf(std::size_t triangle) const

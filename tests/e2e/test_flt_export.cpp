@@ -144,3 +144,43 @@ DEF Body Shape {
     EXPECT_EQ(gold, 6u);
     EXPECT_EQ(silver, 6u);
 }
+
+// A colour per vertex (colorPerVertex TRUE) is written per vertex; a file without one gets
+// no vertex colours, so face colours stay what OpenSceneGraph draws.
+TEST(FltExport, VrmlVertexColorsSurviveOnlyWhereTheFileHasThem)
+{
+    const std::string dir = scratchDir("flt_export_vertex_colors");
+    writeText(dir + "/square.wrl", R"(#VRML V2.0 utf8
+Shape { geometry IndexedFaceSet {
+  coord Coordinate { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }
+  coordIndex [ 0 1 2 -1 0 2 3 -1 ]
+  color Color { color [ 1 0 0, 0 1 0, 0 0 1, 1 1 1 ] }
+} }
+)");
+    const std::string flt = dir + "/square.flt";
+    const ServerRun run = runMeshlabServer({"-i", dir + "/square.wrl", "-o", flt});
+    ASSERT_TRUE(run.ok()) << run.output;
+    const OsgProbe probe = probeWithOsg(flt);
+    ASSERT_TRUE(probe.loaded);
+    ASSERT_EQ(probe.outsideLods.size(), 2u);
+    int red = 0;
+    for (const OsgTriangle& t : probe.outsideLods) {
+        ASSERT_TRUE(t.hasCornerColors);
+        for (int k = 0; k < 3; ++k)
+            red += t.position[k][0] == 0 && t.position[k][1] == 0 && t.cornerColor[k][0] > 0.99f &&
+                   t.cornerColor[k][1] < 0.01f;
+    }
+    EXPECT_EQ(red, 2) << "the corner at the origin is red in both triangles";
+
+    writeText(dir + "/plain.wrl", R"(#VRML V2.0 utf8
+Shape { appearance Appearance { material Material { diffuseColor 0 0 1 } }
+  geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 0, 1 1 0 ] } coordIndex [ 0 1 2 ] } }
+)");
+    const ServerRun plain = runMeshlabServer({"-i", dir + "/plain.wrl", "-o", dir + "/plain.flt"});
+    ASSERT_TRUE(plain.ok()) << plain.output;
+    const OsgProbe p = probeWithOsg(dir + "/plain.flt");
+    ASSERT_TRUE(p.loaded);
+    ASSERT_EQ(p.outsideLods.size(), 1u);
+    EXPECT_FALSE(p.outsideLods[0].hasCornerColors);
+    EXPECT_GT(p.outsideLods[0].color[2], 0.99f);
+}

@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <map>
 
@@ -134,3 +136,70 @@ TEST_P(FaceColors, PartColourOnlyWhenAsked)
 
 INSTANTIATE_TEST_SUITE_P(Geometry, FaceColors,
                          ::testing::Values(flt::GeometryRecords::Meshes, flt::GeometryRecords::Faces));
+
+namespace {
+
+// A square of two triangles with a colour per vertex (colorPerVertex TRUE): red, green,
+// blue, white corners.
+const char* kSquareWithVertexColors = R"(#VRML V2.0 utf8
+Shape { geometry IndexedFaceSet {
+  coord Coordinate { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }
+  coordIndex [ 0 1 2 -1 0 2 3 -1 ]
+  color Color { color [ 1 0 0, 0 1 0, 0 0 1, 1 1 1 ] }
+} }
+)";
+
+std::string cornerName(const std::array<float, 4>& c)
+{
+    auto is = [&](float r, float g, float b) {
+        return std::abs(c[0] - r) < 0.01f && std::abs(c[1] - g) < 0.01f && std::abs(c[2] - b) < 0.01f;
+    };
+    return is(1, 0, 0) ? "red" : is(0, 1, 0) ? "green" : is(0, 0, 1) ? "blue" : is(1, 1, 1) ? "white" : "?";
+}
+
+}  // namespace
+
+// Per-vertex colours, where the input has them, reach OpenSceneGraph as vertex colours.
+TEST_P(FaceColors, VertexColorsSurviveWhereTheInputHasThem)
+{
+    vrml::ImportResult r = vrml::importVrmlText(kSquareWithVertexColors, "square.wrl");
+    ASSERT_TRUE(r.ok()) << r.error;
+    CoreMesh m;
+    mesh_io::sceneToMesh(r.scene, m, {});
+    mesh_io::LevelOptions options;
+    options.label = "square";
+    options.faceColors = true;
+    options.vertexColors = true;
+    mesh_io::LevelStats stats;
+    flt::LodModel model;
+    model.levels.push_back(mesh_io::meshToLevel(m, options, stats));
+    flt::WriteOptions o;
+    o.geometry = GetParam();
+    const std::string path = scratch("vertex_colors.flt");
+    std::string error;
+    ASSERT_TRUE(flt::writeOpenFlightFile(path, model, o, error)) << error;
+    const test::OsgProbe probe = test::probeWithOsg(path);
+    ASSERT_TRUE(probe.loaded);
+    ASSERT_EQ(probe.outsideLods.size(), 2u);
+    std::map<std::string, std::string> cornerOf;  // "x,y" -> colour name
+    for (const test::OsgTriangle& t : probe.outsideLods) {
+        ASSERT_TRUE(t.hasCornerColors);
+        for (int k = 0; k < 3; ++k)
+            EXPECT_NEAR(t.cornerColor[k][3], 1.0f, 0.01f) << "opaque";
+        for (int k = 0; k < 3; ++k)
+            cornerOf[std::to_string(int(t.position[k][0])) + "," + std::to_string(int(t.position[k][1]))] =
+                cornerName(t.cornerColor[k]);
+    }
+    EXPECT_EQ(cornerOf, (std::map<std::string, std::string>{
+                            {"0,0", "red"}, {"1,0", "green"}, {"1,1", "blue"}, {"0,1", "white"}}));
+
+    flt::LodModel back;
+    ASSERT_TRUE(flt::readOpenFlightFile(path, back, error)) << error;
+    ASSERT_EQ(back.levels.size(), 1u);
+    ASSERT_EQ(back.levels[0].parts.size(), 1u);
+    const flt::Part& p = back.levels[0].parts[0];
+    ASSERT_TRUE(p.hasVertexColors());
+    for (std::size_t i = 0; i < p.positions.size(); ++i)
+        if (p.positions[i][0] == 0 && p.positions[i][1] == 0)
+            EXPECT_EQ(cornerName(p.vertexColors[i]), "red");
+}
