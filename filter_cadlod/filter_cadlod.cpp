@@ -1,5 +1,6 @@
 #include "filter_cadlod.h"
 
+#include "compactness_colors.h"
 #include "core/compactness.h"
 #include "lod_set_filter.h"
 #include "report_filter.h"
@@ -34,7 +35,9 @@ QString FilterCadLodPlugin::filterInfo(FilterIDType filter) const
         return "Stores the compactness of every triangle as face quality: "
                "c = 4&radic;3&middot;A / (l0&sup2;+l1&sup2;+l2&sup2;), 1 for an equilateral "
                "triangle, towards 0 for slivers, 0 for zero-area faces (Gu&eacute;ziec). "
-               "Use the quality mapper or the face quality histogram to see where slivers are. "
+               "Faces are painted by compactness on a fixed scale: red 0, yellow 0.5, green 1 "
+               "(this replaces the layer's face colours). "
+               "The quality mapper or the face quality histogram show the same values. "
                "The log reports mean, min, 5th percentile and the share of faces below 0.1 and 0.3.";
     case FP_CAD_SIMPLIFY:
         return "Quadric edge collapse for CAD tessellations (Tang et al. 2015): for each edge the "
@@ -50,8 +53,9 @@ QString FilterCadLodPlugin::filterInfo(FilterIDType filter) const
                "bounding-box diagonal; vertices plus area-uniform samples, as MeshLab's Hausdorff "
                "Distance filter samples) and triangle compactness before and after, with a "
                "histogram. It can store each vertex's distance as vertex quality and each "
-               "triangle's compactness as face quality, so the quality color mapper shows where "
-               "the error and the slivers are.";
+               "triangle's compactness as face quality and paint the faces by it (red 0, yellow "
+               "0.5, green 1; this replaces the layer's face colours), so the slivers show at once "
+               "and the quality color mapper shows where the error is.";
     case FP_LOD_SET:
         return "One new layer per level of detail, each drawn only where its measured error is below "
                "the pixel error on screen: by screen-space error down to a box per part, or the "
@@ -63,9 +67,9 @@ QString FilterCadLodPlugin::filterInfo(FilterIDType filter) const
 MeshFilterInterface::FilterClass FilterCadLodPlugin::getClass(QAction* action)
 {
     switch (ID(action)) {
-    case FP_COMPACTNESS: return FilterClass(Quality | Measure);
+    case FP_COMPACTNESS: return FilterClass(Quality | Measure | FaceColoring);
     case FP_LOD_SET: return Remeshing;
-    case FP_REPORT: return FilterClass(Quality | Measure);
+    case FP_REPORT: return FilterClass(Quality | Measure | FaceColoring);
     case FP_CAD_SIMPLIFY: return Remeshing;
     }
     return Measure;
@@ -79,7 +83,7 @@ MeshFilterInterface::FILTER_ARITY FilterCadLodPlugin::filterArity(QAction* actio
 int FilterCadLodPlugin::getRequirements(QAction* action)
 {
     switch (ID(action)) {
-    case FP_COMPACTNESS: return MeshModel::MM_FACEQUALITY;
+    case FP_COMPACTNESS: return MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR;
     case FP_LOD_SET: return MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK;
     case FP_CAD_SIMPLIFY: return MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK;
     }
@@ -100,9 +104,9 @@ int FilterCadLodPlugin::getPreConditions(QAction* action) const
 int FilterCadLodPlugin::postCondition(QAction* action) const
 {
     switch (ID(action)) {
-    case FP_COMPACTNESS: return MeshModel::MM_FACEQUALITY;
+    case FP_COMPACTNESS: return MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR;
     case FP_LOD_SET: return MeshModel::MM_NONE;  // the original is not changed; levels are new layers
-    case FP_REPORT: return MeshModel::MM_VERTQUALITY | MeshModel::MM_FACEQUALITY;
+    case FP_REPORT: return MeshModel::MM_VERTQUALITY | MeshModel::MM_FACEQUALITY | MeshModel::MM_FACECOLOR;
     case FP_CAD_SIMPLIFY: return MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE;
     }
     return MeshModel::MM_ALL;
@@ -170,6 +174,9 @@ bool FilterCadLodPlugin::computeCompactness(MeshModel& m, vcg::CallBackPos* cb)
         "below 0.1: %.2f%%, below 0.3: %.2f%%",
         qUtf8Printable(m.label()), s.faces, s.mean, s.min, s.p5,
         100.0 * s.shareBelow01, 100.0 * s.shareBelow03);
+    m.updateDataMask(MeshModel::MM_FACECOLOR);
+    cadlod::paintFacesByCompactness(m.cm);
+    Log(cadlod::kCompactnessPaintNote, qUtf8Printable(m.label()));
     return true;
 }
 

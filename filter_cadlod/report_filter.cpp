@@ -1,7 +1,12 @@
 #include "report_filter.h"
 
+#include "compactness_colors.h"
 #include "layer_metadata.h"
 #include "core/simplification_report.h"
+
+#include <vcg/complex/algorithms/update/bounding.h>
+
+#include <cstdio>
 
 namespace cadlod {
 namespace {
@@ -24,6 +29,34 @@ MeshModel* defaultOriginal(MeshDocument& md)
 }
 
 double percentOf(double value, double diagonal) { return diagonal > 0 ? 100.0 * value / diagonal : 0.0; }
+
+// True when both layers are levels of one LOD set: cadlod knows one comes from the other.
+bool sameLodSet(MeshModel& a, MeshModel& b)
+{
+    return hasLodLevel(a.cm) && hasLodLevel(b.cm) && lodLevelHandle(a.cm)().setId == lodLevelHandle(b.cm)().setId;
+}
+
+// Two meshes that cannot be a simplification of one another: bounding boxes that do not
+// overlap, or whose sizes differ by more than 2x. Empty when they may be.
+std::string unrelatedBecause(CMeshO& current, CMeshO& original)
+{
+    vcg::tri::UpdateBounding<CMeshO>::Box(current);
+    vcg::tri::UpdateBounding<CMeshO>::Box(original);
+    const auto& a = current.bbox;
+    const auto& b = original.bbox;
+    const double da = a.Diag(), db = b.Diag();
+    char why[256];
+    if (!a.Collide(b)) {
+        std::snprintf(why, sizeof why, "their bounding boxes do not overlap (centers %.4g apart, diagonals %.4g and %.4g)",
+                      double((a.Center() - b.Center()).Norm()), da, db);
+        return why;
+    }
+    if (da > 2 * db || db > 2 * da) {
+        std::snprintf(why, sizeof why, "their bounding-box diagonals differ more than 2x (%.4g and %.4g)", da, db);
+        return why;
+    }
+    return {};
+}
 
 void logReport(MeshFilterInterface& plugin, const MeshModel& current, const MeshModel& original,
                const SimplificationReport& r)
@@ -59,8 +92,9 @@ void reportParameters(MeshDocument& md, RichParameterList& par)
     par.addParam(RichBool("storeDistance", true, "Distance as vertex quality",
                           "Store each vertex's distance to the original as vertex quality, for "
                           "the quality color mapper."));
-    par.addParam(RichBool("storeCompactness", true, "Compactness as face quality",
-                          "Store each triangle's compactness as face quality."));
+    par.addParam(RichBool("storeCompactness", true, "Compactness as face quality and colour",
+                          "Store each triangle's compactness as face quality and paint the faces by it "
+                          "(red 0, yellow 0.5, green 1; replaces the face colours)."));
 }
 
 bool simplificationReport(MeshFilterInterface& plugin, MeshDocument& md, const RichParameterList& par,
@@ -76,6 +110,27 @@ bool simplificationReport(MeshFilterInterface& plugin, MeshDocument& md, const R
         error = "both layers need faces";
         return false;
     }
+    // A layer is only compared with a mesh it may come from, and the log says when cadlod
+    // has no record of that (two layers opened from files, not levels of one LOD set).
+    const std::string unrelated = unrelatedBecause(current->cm, original->cm);
+    if (!unrelated.empty()) {
+        error = QString("\"%1\" cannot have been simplified from \"%2\": %3. Choose as Original the layer "
+                        "it was simplified from (level 0 of its LOD set, or a copy made before simplifying).")
+                    .arg(current->label(), original->label(), QString::fromStdString(unrelated));
+        return false;
+    }
+    if (!sameLodSet(*current, *original))
+        plugin.Log(GLLogStream::WARNING,
+                   "Simplification report: \"%s\" and \"%s\" are not levels of one LOD set; cadlod has no "
+                   "record that the first was simplified from the second, the report assumes it. If it was not, "
+                   "choose the right Original.",
+                   qUtf8Printable(current->label()), qUtf8Printable(original->label()));
+    if (current->cm.fn > original->cm.fn)
+        plugin.Log(GLLogStream::WARNING,
+                   "Simplification report: \"%s\" has more faces (%d) than its Original \"%s\" (%d): was "
+                   "it really simplified from it?",
+                   qUtf8Printable(current->label()), current->cm.fn, qUtf8Printable(original->label()),
+                   original->cm.fn);
     std::vector<double> distance;
     const SimplificationReport r = compareWithOriginal(original->cm, current->cm,
                                                        std::size_t(std::max(0, par.getInt("samples"))),
@@ -90,8 +145,12 @@ bool simplificationReport(MeshFilterInterface& plugin, MeshDocument& md, const R
         for (CFaceO& f : current->cm.face)
             if (!f.IsD())
                 f.Q() = CFaceO::QualityType(compactness(f.cP(0), f.cP(1), f.cP(2)));
+        current->updateDataMask(MeshModel::MM_FACECOLOR);
+        paintFacesByCompactness(current->cm);
     }
     logReport(plugin, *current, *original, r);
+    if (par.getBool("storeCompactness"))
+        plugin.Log(kCompactnessPaintNote, qUtf8Printable(current->label()));
     return true;
 }
 

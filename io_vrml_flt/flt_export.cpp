@@ -11,6 +11,7 @@
 
 #include <QElapsedTimer>
 
+#include <algorithm>
 #include <cstdio>
 #include <QFileInfo>
 
@@ -29,28 +30,31 @@ const char* const kDrawType = "drawType";
 const char* const kObjects = "objects";
 const char* const kRecords = "records";
 const char* const kWholeSet = "wholeLodSet";
+const char* const kColors = "colors";
 
 const flt::Units kUnitChoices[] = {flt::Units::Meters, flt::Units::Kilometers, flt::Units::Feet,
                                    flt::Units::Inches, flt::Units::NauticalMiles};
 
-mesh_io::LevelOptions levelOptions(MeshModel& mm, bool withUvs)
+mesh_io::LevelOptions levelOptions(MeshModel& mm, bool withUvs, bool faceColors)
 {
     mesh_io::LevelOptions o;
     o.label = mm.label().toStdString();
-    o.faceColors = mm.hasDataMask(MeshModel::MM_FACECOLOR);
+    o.faceColors = faceColors && mm.hasDataMask(MeshModel::MM_FACECOLOR);
+    // Vertex colours only where the layer has them (a VRML file's per-vertex Color, a PLY's).
+    o.vertexColors = faceColors && mm.hasDataMask(MeshModel::MM_VERTCOLOR);
     o.uvs = withUvs && mm.hasDataMask(MeshModel::MM_VERTTEXCOORD);
     return o;
 }
 
 // Every layer of the document that belongs to the same LOD set as `mm`.
-bool gatherLodSet(MeshModel& mm, bool withUvs, flt::LodModel& model, mesh_io::LevelStats& stats, QString& error)
+bool gatherLodSet(MeshModel& mm, bool withUvs, bool faceColors, flt::LodModel& model, mesh_io::LevelStats& stats, QString& error)
 {
     const int setId = lodLevelHandle(mm.cm)().setId;
     std::vector<mesh_io::LodLayer<CMeshO>> layers;
     const QList<MeshModel*> list = mm.parent ? mm.parent->meshList : QList<MeshModel*>{&mm};
     for (MeshModel* layer : list)
         if (layer)
-            layers.push_back({&layer->cm, levelOptions(*layer, withUvs)});
+            layers.push_back({&layer->cm, levelOptions(*layer, withUvs, faceColors)});
     std::string why;
     if (!mesh_io::lodSetToModel(layers, setId, model, stats, why)) {
         error = QString::fromStdString(why);
@@ -84,26 +88,26 @@ flt::Units unitsParameter(const RichParameterList& par)
 void fltSaveParameters(MeshModel&, RichParameterList& par)
 {
     par.addParam(RichEnum(kUnits, 0, {"meters", "kilometers", "feet", "inches", "nautical miles"},
-                          "Units", "Unit of the vertex coordinates, stored in the OpenFlight header. "
-                          "Coordinates are written as they are (no scaling)."));
+                          "Units", "Stored in the header; coordinates are not scaled."));
     par.addParam(RichEnum(kDrawType, 0, {"Single-sided (back faces culled)", "Two-sided"}, "Draw type",
-                          "Two-sided for open CAD surfaces seen from both sides."));
+                          "Two-sided for open surfaces seen from both sides."));
     par.addParam(RichEnum(kObjects, 0, {"One Object per part", "One Object per level"}, "Objects",
-                          "One OpenFlight Object per CAD part (names kept in Long ID records), or one per LOD level."));
+                          "One Object per CAD part (names kept), or one per level."));
     par.addParam(RichEnum(kRecords, 0,
                           {"Mesh records (compact, fast to load)", "Face records (one per triangle)"},
                           "Geometry records",
-                          "Mesh records: a local vertex pool and one triangle strip per part. "
-                          "Face records: a shared vertex palette and one Face per triangle, for old tools."));
+                          "Mesh records are compact; Face records suit old tools."));
+    par.addParam(RichEnum(kColors, 0, {"As the layer has them", "One colour per part"}, "Colours",
+                          "Face (and vertex) colours as the layer has them, or one per CAD part."));
     par.addParam(RichBool(kWholeSet, true, "Write the whole LOD set",
-                          "When the layer belongs to an LOD set, write every level of the set with its "
-                          "switch distances; otherwise only this layer."));
+                          "Every level of the layer's LOD set, or only this layer."));
 }
 
 int fltExportCapability()
 {
-    return vcg::tri::io::Mask::IOM_VERTNORMAL | vcg::tri::io::Mask::IOM_FACECOLOR |
-           vcg::tri::io::Mask::IOM_VERTTEXCOORD;
+    // No face-colour checkbox: meshlabserver passes an empty mask unless told otherwise,
+    // so colours are a save parameter ("Colours"), the same in the GUI and headless.
+    return vcg::tri::io::Mask::IOM_VERTNORMAL | vcg::tri::io::Mask::IOM_VERTTEXCOORD;
 }
 
 bool saveOpenFlight(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, int mask,
@@ -113,19 +117,20 @@ bool saveOpenFlight(MeshIOInterface& plugin, const QString& fileName, MeshModel&
     timer.start();
     const bool withUvs = (mask & vcg::tri::io::Mask::IOM_VERTTEXCOORD) != 0;
     const bool wholeSet = !par.hasParameter(kWholeSet) || par.getBool(kWholeSet);
+    const bool faceColors = !par.hasParameter(kColors) || par.getEnum(kColors) == 0;
     flt::LodModel model;
     model.name = QFileInfo(fileName).completeBaseName().toStdString();
     model.units = unitsParameter(par);
     mesh_io::LevelStats stats;
     if (wholeSet && hasLodLevel(m.cm)) {
         QString why;
-        if (!gatherLodSet(m, withUvs, model, stats, why)) {
+        if (!gatherLodSet(m, withUvs, faceColors, model, stats, why)) {
             error = fileName + ": cannot write the LOD set of layer " + m.label() + ": " + why;
             report(plugin, GLLogStream::WARNING, error);
             return false;
         }
     } else {
-        flt::Level level = mesh_io::meshToLevel(m.cm, levelOptions(m, withUvs), stats);
+        flt::Level level = mesh_io::meshToLevel(m.cm, levelOptions(m, withUvs, faceColors), stats);
         level.name = m.label().toStdString();
         model.levels.push_back(std::move(level));
     }
@@ -135,8 +140,9 @@ bool saveOpenFlight(MeshIOInterface& plugin, const QString& fileName, MeshModel&
         return false;
     }
     flt::WriteOptions options = writeOptions(par);
+    ProgressReporter progress(cb);
     if (cb)
-        options.progress = [cb](int percent) { cb(percent, "Writing OpenFlight"); };
+        options.progress = [&progress](int percent) { progress(percent, "Writing OpenFlight"); };
     std::string why;
     flt::WriteStats written;
     if (!flt::writeOpenFlightFile(fileName.toStdString(), model, options, why, &written)) {
@@ -151,6 +157,7 @@ bool saveOpenFlight(MeshIOInterface& plugin, const QString& fileName, MeshModel&
                written.triangles ? double(written.bytes) / double(written.triangles) : 0.0,
                options.geometry == flt::GeometryRecords::Meshes ? "Mesh" : "Face", flt::unitsName(model.units),
                stats.skippedFaces, static_cast<long long>(timer.elapsed())));
+    progress.finish("OpenFlight saved");  // replaces "Writing OpenFlight" in the status bar
     return true;
 }
 

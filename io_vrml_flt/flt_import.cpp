@@ -9,6 +9,8 @@
 
 #include <QElapsedTimer>
 
+#include <algorithm>
+
 #include <cstdio>
 
 namespace cadlod {
@@ -36,6 +38,10 @@ void fillLayer(const flt::Level& level, MeshModel& m, int& mask)
         mask |= vcg::tri::io::Mask::IOM_VERTNORMAL;
     if (uvs)
         mask |= vcg::tri::io::Mask::IOM_VERTTEXCOORD;
+    if (std::any_of(level.parts.begin(), level.parts.end(), [](const flt::Part& p) { return p.hasVertexColors(); })) {
+        m.updateDataMask(MeshModel::MM_VERTCOLOR);
+        mask |= vcg::tri::io::Mask::IOM_VERTCOLOR;
+    }
 }
 
 }  // namespace
@@ -55,8 +61,9 @@ bool openOpenFlight(MeshIOInterface& plugin, const QString& fileName, MeshModel&
     flt::LodModel model;
     flt::ReadStats stats;
     flt::ReadOptions options;
+    ProgressReporter progress(cb);
     if (cb)
-        options.progress = [cb](int percent) { cb(percent, "Reading OpenFlight"); };
+        options.progress = [&progress](int percent) { progress(percent, "Reading OpenFlight"); };
     std::string why;
     if (!flt::readOpenFlightFile(fileName.toStdString(), model, why, &stats, options)) {
         error = QString::fromStdString(why);
@@ -82,6 +89,7 @@ bool openOpenFlight(MeshIOInterface& plugin, const QString& fileName, MeshModel&
                qUtf8Printable(fileName), stats.formatRevision, flt::unitsName(model.units), model.levels.size(),
                chosen, model.levels[chosen].name.c_str(), model.levels[chosen].parts.size(), m.cm.vn, m.cm.fn,
                stats.skippedFaces, stats.unknownRecords, static_cast<long long>(timer.elapsed())));
+    progress.finish("OpenFlight opened");  // replaces "Reading OpenFlight" in the status bar
     return true;
 }
 

@@ -6,7 +6,41 @@
 
 #include <common/interfaces.h>
 
+#include <QElapsedTimer>
+#include <QThread>
+
+#include <algorithm>
+
 namespace cadlod {
+
+// Forwards progress to MeshLab's callback and ends with a message that stays in the status
+// bar. MeshLab 2020.09's callback drops a call that comes within 100 ms of the one before
+// or repeats its position, so a save that ends quickly would leave "Writing OpenFlight"
+// on screen: the last call waits out those 100 ms and always has its own position.
+class ProgressReporter {
+public:
+    explicit ProgressReporter(vcg::CallBackPos* cb) : cb_(cb) {}
+    void operator()(int percent, const char* what)
+    {
+        if (!cb_)
+            return;
+        cb_(std::min(percent, 99), what);
+        last_.start();
+    }
+    void finish(const char* what)
+    {
+        if (!cb_)
+            return;
+        if (last_.isValid() && last_.elapsed() < kGapMs)
+            QThread::msleep(static_cast<unsigned long>(kGapMs - last_.elapsed()));
+        cb_(100, what);
+    }
+
+private:
+    static constexpr qint64 kGapMs = 110;
+    vcg::CallBackPos* cb_;
+    QElapsedTimer last_;
+};
 
 // VRML97 / VRML 1.0, plain or gzip (vrml_import.cpp).
 void vrmlOpenParameters(RichParameterList& par);

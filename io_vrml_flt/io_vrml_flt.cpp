@@ -52,6 +52,9 @@ void IoVrmlFltPlugin::initSaveParameter(const QString& format, MeshModel& m, Ric
 bool IoVrmlFltPlugin::open(const QString& format, const QString& fileName, MeshModel& m, int& mask,
                            const RichParameterList& par, vcg::CallBackPos* cb, QWidget*)
 {
+    // MeshLab shows errorMessage after any open that logs or fails: a message left over
+    // from an earlier failed save or open must not come back as a warning now.
+    errorMessage.clear();
     if (isVrml(format))
         return cadlod::openVrml(*this, fileName, m, mask, par, cb, errorMessage);
     if (isOpenFlight(format))
@@ -63,6 +66,7 @@ bool IoVrmlFltPlugin::open(const QString& format, const QString& fileName, MeshM
 bool IoVrmlFltPlugin::save(const QString& format, const QString& fileName, MeshModel& m, const int mask,
                            const RichParameterList& par, vcg::CallBackPos* cb, QWidget*)
 {
+    errorMessage.clear();
     if (isOpenFlight(format))
         return cadlod::saveOpenFlight(*this, fileName, m, mask, par, cb, errorMessage);
     errorMessage = "io_vrml_flt cannot save format " + format;

@@ -21,6 +21,8 @@ constexpr const char* kUnitScale = "vrmlUnitScale";
 constexpr const char* kMergeVertices = "vrmlMergeVertices";
 constexpr const char* kMergeTolerance = "vrmlMergeTolerance";
 constexpr const char* kNormals = "vrmlNormals";
+constexpr const char* kUpAxis = "vrmlUpAxis";
+constexpr const char* kKicadUnits = "vrmlKicadUnits";
 
 // meshlabserver's -i path never gives an IO plugin a log (MeshLabInterface::Log is then
 // a no-op), so every report also goes to stderr.
@@ -55,6 +57,12 @@ void vrmlOpenParameters(RichParameterList& par)
     par.addParam(RichFloat(kMergeTolerance, 0.0f, "Merge tolerance",
                            "Largest distance (model units, after scaling) between merged vertices; 0 merges "
                            "only identical points, never closing real small gaps."));
+    par.addParam(RichEnum(kUpAxis, 0, QStringList{"Keep (Z up, as CAD exporters write)", "Y up -> Z up"}, "Up axis",
+                          "OpenFlight is Z up. FreeCAD, KiCad and OCCT write Z up: keep. "
+                          "Y up -> Z up rotates files that follow VRML's Y-up convention."));
+    par.addParam(RichBool(kKicadUnits, true, "KiCad 0.1-inch units",
+                          "Files with KiCad StepUp's header are in 0.1 inch: scale them by 2.54 to mm "
+                          "(before Unit scale)."));
     par.addParam(RichEnum(kNormals, 0, QStringList{"Keep file normals", "Recompute from creaseAngle"}, "Normals",
                           "Keep the normals the file gives (creaseAngle where it gives none), or ignore them "
                           "and recompute everything from creaseAngle."));
@@ -68,6 +76,8 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     vrml::ImportOptions options;
     options.unitScale = par.hasParameter(kUnitScale) ? par.getFloat(kUnitScale) : 1.0f;
     options.recomputeNormals = par.hasParameter(kNormals) && par.getEnum(kNormals) == 1;
+    options.upAxis = par.hasParameter(kUpAxis) && par.getEnum(kUpAxis) == 1 ? vrml::UpAxis::YUpToZUp : vrml::UpAxis::Keep;
+    options.detectKicadUnits = !par.hasParameter(kKicadUnits) || par.getBool(kKicadUnits);
     if (cb) options.progress = [cb](double f) { cb(int(60 * f), "Reading VRML"); };
 
     vrml::ImportResult result = vrml::importVrmlFile(fileName.toStdString(), options);
@@ -78,25 +88,32 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     }
     vrml::Scene& scene = result.scene;
     const qint64 parsedMs = timer.elapsed();
-    mask = vcg::tri::io::Mask::IOM_VERTNORMAL | vcg::tri::io::Mask::IOM_VERTCOLOR | vcg::tri::io::Mask::IOM_FACECOLOR;
+    mask = vcg::tri::io::Mask::IOM_VERTNORMAL | vcg::tri::io::Mask::IOM_FACECOLOR;
+    // Vertex colours only when the file gives them (colorPerVertex): the layer then shows
+    // them and the OpenFlight export writes them; otherwise the face colours are the truth.
+    if (std::any_of(scene.parts.begin(), scene.parts.end(), [](const vrml::Part& p) { return !p.colors.empty(); }))
+        mask |= vcg::tri::io::Mask::IOM_VERTCOLOR;
     if (mesh_io::hasTexCoords(scene)) mask |= vcg::tri::io::Mask::IOM_WEDGTEXCOORD;
     m.Enable(mask);
     mesh_io::SceneToMeshOptions toMesh;
     toMesh.mergeVertices = !par.hasParameter(kMergeVertices) || par.getBool(kMergeVertices);
     toMesh.mergeTolerance = par.hasParameter(kMergeTolerance) ? par.getFloat(kMergeTolerance) : 0.0f;
-    const int merged = mesh_io::sceneToMesh(scene, m.cm, toMesh, cb);
+    mesh_io::SceneToMeshStats built;
+    const int merged = mesh_io::sceneToMesh(scene, m.cm, toMesh, cb, &built);
 
     const double seconds = std::max(1e-6, timer.elapsed() / 1000.0);
     char line[1024];
     std::snprintf(line, sizeof line,
                   "VRML %d import of %s: %zu parts, %d triangles, %d vertices (%d merged), %zu shapes, "
-                  "%zu faces skipped, %zu line/point sets ignored, %zu inlines; %.1f MB in %.2f s (read %.2f s), "
+                  "%zu faces skipped, %d faces repeating a vertex after welding removed, %zu line/point sets ignored, %zu inlines; %.1f MB in %.2f s (read %.2f s), "
                   "%.1f MB/s",
                   scene.version == 1 ? 1 : 2, qUtf8Printable(fileName), partTableHandle(m.cm)().size(), m.cm.fn,
-                  m.cm.vn, merged, scene.stats.shapes, scene.stats.skippedFaces,
+                  m.cm.vn, merged, scene.stats.shapes, scene.stats.skippedFaces, built.facesRepeatingVertex,
                   scene.stats.lineSets + scene.stats.pointSets, scene.stats.inlinesLoaded, scene.stats.bytesRead / 1e6,
                   seconds, parsedMs / 1000.0, scene.stats.bytesRead / 1e6 / seconds);
     report(plugin, GLLogStream::FILTER, line);
+    report(plugin, GLLogStream::FILTER, "VRML import of " + fileName.toStdString() + ": " +
+                                            result.assumed.describe(options.unitScale));
     logDiagnostics(plugin, scene.diagnostics);
     if (cb) cb(100, "VRML import done");
     return true;

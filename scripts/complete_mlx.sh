@@ -8,4 +8,20 @@ BUILD="${CADLOD_BUILD_DIR:-$ROOT/build}"
 [ $# -eq 2 ] || { echo "usage: scripts/complete_mlx.sh IN.mlx OUT.mlx" >&2; exit 2; }
 tool="$BUILD/tests/e2e/cadlod_mlx_complete"
 [ -x "$tool" ] || { echo "no $tool: build first (scripts/test.sh)" >&2; exit 1; }
-xvfb-run -a "$tool" "$BUILD/stage/lib/x86_64-linux-gnu/meshlab/plugins" "$1" "$2" 2> >(grep -v -e "Plugins Dir" -e "Serious error" >&2)
+# MeshLab's plugin loader chatters on stderr; keep the tool's own message (an unknown
+# filter or parameter lists the names there are, see docs/mlx-parameters.md). The filter
+# runs after the tool has ended, not in a process substitution that the script's exit
+# could cut short, so the message is printed whatever stderr is (terminal, file, pipe).
+# An X display is needed (MeshLab's plugins need GL): the caller's, or a fresh Xvfb.
+run="xvfb-run -a"
+[ -n "${DISPLAY:-}" ] && xdpyinfo >/dev/null 2>&1 && run=""
+errors=$(mktemp)
+trap 'rm -f "$errors"' EXIT
+status=0
+$run "$tool" "$BUILD/stage/lib/x86_64-linux-gnu/meshlab/plugins" "$1" "$2" 2>"$errors" || status=$?
+grep -v -e "Plugins Dir" -e "Serious error" "$errors" >&2 || true
+if [ $status -ne 0 ]; then
+  grep -q "cadlod_mlx_complete:" "$errors" || echo "complete_mlx.sh: cadlod_mlx_complete failed (exit $status)" >&2
+  echo "complete_mlx.sh: parameter names of every cadlod filter: docs/mlx-parameters.md" >&2
+fi
+exit $status

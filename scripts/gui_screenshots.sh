@@ -34,11 +34,11 @@ open_submenu() {  # Filters > submenu at height $1
   click 120 10; xdotool mousemove 240 "$1"; sleep 0.5; xdotool mousemove 300 "$1"; sleep 1
 }
 
-# 1. Opening a CAD VRML: cadlod's import options (unit scale mm -> m, merging, normals).
+# 1. Opening a CAD VRML: cadlod's import options (unit scale mm -> m, merging, up axis, KiCad units, normals).
 start_meshlab "$SHAFT"
-xdotool mousemove 470 199 click --repeat 3 1; xdotool type "0.001"; sleep 0.5
+xdotool mousemove 470 169 click --repeat 3 1; xdotool type "0.001"; sleep 0.5
 shot open-options
-click 379 330 3
+click 399 360 3
 # 2. Filters > Remeshing lists the CAD Quadric Edge Collapse and Generate CAD LOD Set.
 open_submenu 161
 import -window root -crop 1280x900+0+0 +repage "$OUT/gui-remeshing-menu.png"; echo "wrote docs/img/gui-remeshing-menu.png"

@@ -59,12 +59,14 @@ void levelToMesh(const flt::Level& level, Mesh& m)
                 v->N() = Point(part.normals[i][0], part.normals[i][1], part.normals[i][2]);
             if (uvs)
                 v->T() = vcg::TexCoord2f(part.uvs[i][0], part.uvs[i][1]);
+            v->C() = detail::toColor4b(part.hasVertexColors() ? part.vertexColors[i] : part.color);
         }
         auto f = vcg::tri::Allocator<Mesh>::AddFaces(m, part.triangles.size());
-        for (const flt::Triangle& t : part.triangles) {
+        for (std::size_t i = 0; i < part.triangles.size(); ++i) {
+            const flt::Triangle& t = part.triangles[i];
             for (int k = 0; k < 3; ++k)
                 f->V(k) = &m.vert[firstVertex + t[k]];
-            f->C() = detail::toColor4b(part.color);
+            f->C() = detail::toColor4b(part.colorOf(i));
             facePart[f] = int(p);
             ++f;
         }

@@ -11,6 +11,7 @@
 
 #include <vcg/complex/complex.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -21,7 +22,8 @@ namespace cadlod::mesh_io {
 
 struct LevelOptions {
     std::string label;        // names the parts of a mesh without a part table
-    bool faceColors = false;  // without a part table, group faces by face colour
+    bool faceColors = false;  // write each face's colour (without a part table: parts by face colour)
+    bool vertexColors = false;  // write each vertex's colour (drawn instead of the face colours)
     bool uvs = false;         // write per-vertex texture coordinates
 };
 
@@ -146,15 +148,28 @@ flt::Level meshToLevel(Mesh& m, const LevelOptions& options, LevelStats& stats)
                 part.normals.push_back({n[0], n[1], n[2]});
                 if (options.uvs)
                     part.uvs.push_back({float(v.cT().U()), float(v.cT().V())});
+                if (options.vertexColors)
+                    part.vertexColors.push_back(detail::toRgba(v.cC()));
             }
             tri[k] = std::uint32_t(index[vi]);
         }
         part.triangles.push_back(tri);
+        if (options.faceColors)
+            part.triangleColors.push_back(detail::toRgba(f.cC()));
     }
     flt::Level level;
-    for (flt::Part& p : g.parts)
-        if (!p.triangles.empty())
-            level.parts.push_back(std::move(p));
+    for (flt::Part& p : g.parts) {
+        if (p.triangles.empty())
+            continue;
+        // Faces of one colour: that colour is the part's, no list needed.
+        const bool uniform = std::all_of(p.triangleColors.begin(), p.triangleColors.end(),
+                                         [&](const flt::Rgba& c) { return c == p.triangleColors.front(); });
+        if (!p.triangleColors.empty() && uniform) {
+            p.color = p.triangleColors.front();
+            p.triangleColors.clear();
+        }
+        level.parts.push_back(std::move(p));
+    }
     return level;
 }
 

@@ -132,11 +132,35 @@ int mergeCloseVertices(Mesh& m, float tolerance)
     return merged;
 }
 
-// The whole conversion: welding (and merging within the tolerance), the scene moved into
-// `m` (the scene's parts are emptied), face normals and the bounding box. Returns the
-// number of vertices merged away. Progress runs from 60 to 90 %.
+struct SceneToMeshStats {
+    int mergedVertices = 0;        // vertices welded or merged away
+    int facesRepeatingVertex = 0;  // faces removed because welding gave them a vertex twice
+};
+
+// Deletes the faces that use one vertex twice (welding rounded coordinates can make them:
+// two corners of a sliver land on one point). They have no area and are not part of the
+// surface: a closed mesh stays closed without them. MeshLab's load path would remove them
+// anyway, with a modal "degenerated faces. Corrected." dialog. Returns how many.
 template <class Mesh>
-int sceneToMesh(vrml::Scene& scene, Mesh& m, const SceneToMeshOptions& options, vcg::CallBackPos* cb = nullptr)
+int removeFacesRepeatingAVertex(Mesh& m)
+{
+    int removed = 0;
+    for (auto& f : m.face)
+        if (!f.IsD() && (f.V(0) == f.V(1) || f.V(1) == f.V(2) || f.V(2) == f.V(0))) {
+            vcg::tri::Allocator<Mesh>::DeleteFace(m, f);
+            ++removed;
+        }
+    if (removed > 0) vcg::tri::Allocator<Mesh>::CompactFaceVector(m);
+    return removed;
+}
+
+// The whole conversion: welding (and merging within the tolerance), the scene moved into
+// `m` (the scene's parts are emptied), faces repeating a vertex removed, face normals and
+// the bounding box. Returns the number of vertices merged away; `stats` (optional) also
+// gets the faces removed. Progress runs from 60 to 90 %.
+template <class Mesh>
+int sceneToMesh(vrml::Scene& scene, Mesh& m, const SceneToMeshOptions& options, vcg::CallBackPos* cb = nullptr,
+                SceneToMeshStats* stats = nullptr)
 {
     const size_t sceneVertices = scene.vertexCount();
     vrml::Welding welding;
@@ -145,6 +169,8 @@ int sceneToMesh(vrml::Scene& scene, Mesh& m, const SceneToMeshOptions& options, 
     moveScene(scene, options.mergeVertices ? &welding : nullptr, m, cb);
     welding = {};
     if (options.mergeVertices && options.mergeTolerance > 0) merged += mergeCloseVertices(m, options.mergeTolerance);
+    const int repeating = removeFacesRepeatingAVertex(m);
+    if (stats) *stats = {merged, repeating};
     vcg::tri::UpdateNormal<Mesh>::PerFaceNormalized(m);
     vcg::tri::UpdateBounding<Mesh>::Box(m);
     return merged;

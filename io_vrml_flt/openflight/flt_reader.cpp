@@ -4,6 +4,7 @@
 #include "records.h"
 #include "triangle_strip.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -19,8 +20,10 @@ struct PoolVertex {
     Vec3d position{0, 0, 0};
     Vec3f normal{0, 0, 0};
     Vec2f uv{0, 0};
+    Rgba color{1, 1, 1, 1};
     bool hasNormal = false;
     bool hasUv = false;
+    bool hasColor = false;
 };
 
 enum class Node { None, Group, Lod, Object, Face, Mesh, Other };
@@ -232,7 +235,8 @@ private:
             return;
         }
         PoolVertex v;
-        in.skip(4);  // color name index, flags
+        in.skip(2);  // color name index
+        const std::uint16_t flags = in.u16();
         for (double& x : v.position)
             x = in.f64();
         if (op == opcode::VertexNormal || op == opcode::VertexNormalUv) {
@@ -243,6 +247,11 @@ private:
         if (op == opcode::VertexNormalUv || op == opcode::VertexColorUv) {
             v.uv = {in.f32(), in.f32()};
             v.hasUv = true;
+        }
+        const std::uint32_t packed = in.u32();
+        if ((flags & kVertexPackedColor) && !(flags & kVertexNoColor)) {
+            v.color = unpackColor(packed);
+            v.hasColor = true;
         }
         paletteVertices_[static_cast<std::uint32_t>(pos - paletteStart_)] = v;
     }
@@ -426,8 +435,10 @@ private:
             return;
         }
         setPartColorOnce(level, part, f.color);
-        for (std::size_t i = 1; i + 1 < corners.size(); ++i)
+        for (std::size_t i = 1; i + 1 < corners.size(); ++i) {
             p.triangles.push_back({corners[0], corners[i], corners[i + 1]});
+            p.triangleColors.push_back(f.color);
+        }
     }
 
     // NaN or infinite coordinates cannot be placed: their faces are skipped and counted.
@@ -442,12 +453,16 @@ private:
             p.normals.push_back(v.normal);
         if (v.hasUv && p.uvs.size() == p.positions.size())
             p.uvs.push_back(v.uv);
+        if (v.hasColor && p.vertexColors.size() == p.positions.size())
+            p.vertexColors.push_back(v.color);
         p.positions.push_back(v.position);
         // A part whose vertices disagree on attributes keeps none of that attribute.
         if (p.normals.size() != p.positions.size())
             p.normals.clear();
         if (p.uvs.size() != p.positions.size())
             p.uvs.clear();
+        if (p.vertexColors.size() != p.positions.size())
+            p.vertexColors.clear();
     }
 
     bool readLocalVertexPool(ByteReader& in, std::size_t pos, std::string& error)
@@ -478,8 +493,10 @@ private:
                     x = in.f64();
             if (mask & 0x40000000u)
                 in.skip(4);  // color index
-            if (mask & 0x20000000u)
-                in.skip(4);  // RGBA color
+            if (mask & kPoolRgba) {
+                v.color = unpackColor(in.u32());
+                v.hasColor = true;
+            }
             if (mask & kPoolNormal) {
                 for (float& x : v.normal)
                     x = in.f32();
@@ -576,6 +593,7 @@ private:
                 continue;
             }
             p.triangles.push_back(mapped);
+            p.triangleColors.push_back(f.color);
             ++valid;
         }
         if (valid == 0)
@@ -583,13 +601,19 @@ private:
         return true;
     }
 
+    // Also drops the per-triangle colours of a part whose faces all have the part's colour.
     void dropEmptyParts()
     {
         for (Level& level : model_.levels) {
             std::vector<Part> kept;
-            for (Part& p : level.parts)
+            for (Part& p : level.parts) {
+                const bool uniform = std::all_of(p.triangleColors.begin(), p.triangleColors.end(),
+                                                 [&](const Rgba& c) { return c == p.color; });
+                if (uniform)
+                    p.triangleColors.clear();
                 if (!p.triangles.empty())
                     kept.push_back(std::move(p));
+            }
             level.parts = std::move(kept);
         }
     }

@@ -2,8 +2,11 @@
 
 #include "triangle_strip.h"
 
-#include <fstream>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <limits>
+#include <map>
 
 namespace cadlod::flt {
 namespace {
@@ -17,7 +20,10 @@ Appearance appearanceOf(const Part& part, const WriteOptions& options)
 {
     Appearance a;
     a.drawType = options.drawType;
-    a.lightMode = part.hasNormals() ? LightMode::FaceColorLit : LightMode::FaceColor;
+    if (part.hasVertexColors())
+        a.lightMode = part.hasNormals() ? LightMode::VertexColorLit : LightMode::VertexColor;
+    else
+        a.lightMode = part.hasNormals() ? LightMode::FaceColorLit : LightMode::FaceColor;
     a.color = part.color;
     return a;
 }
@@ -76,7 +82,8 @@ private:
             for (const Part& part : level.parts)
                 for (std::size_t v = 0; v < part.positions.size(); ++v)
                     writeVertex(w_, part.positions[v], part.hasNormals() ? &part.normals[v] : nullptr,
-                                part.hasUvs() ? &part.uvs[v] : nullptr);
+                                part.hasUvs() ? &part.uvs[v] : nullptr,
+                                part.hasVertexColors() ? &part.vertexColors[v] : nullptr);
     }
 
     void writeLevel(const Level& level, std::size_t index)
@@ -128,9 +135,11 @@ private:
     void writeFaces(const Part& part, std::size_t firstOffset)
     {
         const std::size_t stride = vertexRecordSize(part.hasNormals(), part.hasUvs());
-        const Appearance appearance = appearanceOf(part, options_);
+        Appearance appearance = appearanceOf(part, options_);
         std::vector<std::uint32_t> offsets(3);
-        for (const Triangle& t : part.triangles) {
+        for (std::size_t i = 0; i < part.triangles.size(); ++i) {
+            const Triangle& t = part.triangles[i];
+            appearance.color = part.colorOf(i);
             writeFace(w_, appearance);
             writePush(w_);
             for (int c = 0; c < 3; ++c)
@@ -141,11 +150,52 @@ private:
         }
     }
 
+    // A part with per-face colours: one Mesh record per colour (a Mesh has one colour),
+    // each with the vertices its triangles use.
     void writeMeshPart(const Part& part)
     {
-        writeMesh(w_, appearanceOf(part, options_));
+        std::map<std::uint32_t, std::vector<std::size_t>> byColor;
+        if (part.hasTriangleColors())
+            for (std::size_t i = 0; i < part.triangles.size(); ++i)
+                byColor[packColor(part.triangleColors[i])].push_back(i);
+        if (byColor.size() <= 1) {
+            writeOneMesh(part, byColor.empty() ? part.color : part.triangleColors.front());
+            return;
+        }
+        for (const auto& [packed, triangles] : byColor) {
+            Part sub;
+            sub.color = part.triangleColors[triangles.front()];
+            std::vector<std::int64_t> local(part.positions.size(), -1);
+            for (std::size_t t : triangles) {
+                Triangle mapped;
+                for (int c = 0; c < 3; ++c) {
+                    const std::uint32_t v = part.triangles[t][c];
+                    if (local[v] < 0) {
+                        local[v] = std::int64_t(sub.positions.size());
+                        sub.positions.push_back(part.positions[v]);
+                        if (part.hasNormals())
+                            sub.normals.push_back(part.normals[v]);
+                        if (part.hasUvs())
+                            sub.uvs.push_back(part.uvs[v]);
+                        if (part.hasVertexColors())
+                            sub.vertexColors.push_back(part.vertexColors[v]);
+                    }
+                    mapped[c] = std::uint32_t(local[v]);
+                }
+                sub.triangles.push_back(mapped);
+            }
+            writeOneMesh(sub, sub.color);
+        }
+    }
+
+    void writeOneMesh(const Part& part, const Rgba& color)
+    {
+        Appearance appearance = appearanceOf(part, options_);
+        appearance.color = color;
+        writeMesh(w_, appearance);
         writeLocalVertexPool(w_, part.positions, part.hasNormals() ? part.normals : std::vector<Vec3f>{},
-                             part.hasUvs() ? part.uvs : std::vector<Vec2f>{});
+                             part.hasUvs() ? part.uvs : std::vector<Vec2f>{},
+                             part.hasVertexColors() ? part.vertexColors : std::vector<Rgba>{});
         writePush(w_);
         writeMeshPrimitive(w_, PrimitiveType::TriangleStrip, stitchedStrip(part.triangles));
         writePop(w_);
@@ -184,6 +234,16 @@ bool validatePart(const Part& part, const std::string& at, std::string& error)
     if (!part.uvs.empty() && part.uvs.size() != part.positions.size()) {
         error = at + ": " + std::to_string(part.uvs.size()) + " texture coordinates for " +
                 std::to_string(part.positions.size()) + " vertices";
+        return false;
+    }
+    if (!part.vertexColors.empty() && part.vertexColors.size() != part.positions.size()) {
+        error = at + ": " + std::to_string(part.vertexColors.size()) + " vertex colours for " +
+                std::to_string(part.positions.size()) + " vertices";
+        return false;
+    }
+    if (!part.triangleColors.empty() && part.triangleColors.size() != part.triangles.size()) {
+        error = at + ": " + std::to_string(part.triangleColors.size()) + " face colours for " +
+                std::to_string(part.triangles.size()) + " triangles";
         return false;
     }
     for (std::size_t t = 0; t < part.triangles.size(); ++t)
@@ -248,11 +308,18 @@ bool writeOpenFlightFile(const std::string& path, const LodModel& model, const W
         error = path + ": " + error;
         return false;
     }
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-    out.close();
+    // stdio rather than a stream: errno says why (no such directory, permission, disk full).
+    errno = 0;
+    std::FILE* out = std::fopen(path.c_str(), "wb");
     if (!out) {
-        error = path + ": cannot write the file";
+        error = path + ": cannot create the file: " + std::strerror(errno);
+        return false;
+    }
+    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
+    const int writeErrno = errno;
+    const bool closed = std::fclose(out) == 0;
+    if (!written || !closed) {
+        error = path + ": cannot write the file: " + std::strerror(written ? errno : writeErrno);
         return false;
     }
     return true;

@@ -21,13 +21,24 @@ using Vec2f = std::array<float, 2>;
 using Triangle = std::array<std::uint32_t, 3>;  // indices into the part's vertex arrays
 using cadlod::Rgba;                             // 0..1
 
-// One Object: the part's identity (Object name in a Long ID record, face colour) and its
-// own indexed vertex pool.
+// One Object: the part's identity (Object name in a Long ID record, colour) and its
+// own indexed vertex pool. A part whose faces have different colours (per-face colours of
+// a CAD export) lists one colour per triangle; without that list every face has `color`.
 struct Part : PartIdentity {
     std::vector<Vec3d> positions;
     std::vector<Vec3f> normals;  // one per position, or empty
     std::vector<Vec2f> uvs;      // one per position, or empty
     std::vector<Triangle> triangles;
+    std::vector<Rgba> triangleColors;  // one per triangle, or empty (all `color`)
+    std::vector<Rgba> vertexColors;    // one per position, or empty: drawn instead of face colours
+
+    bool hasVertexColors() const { return !positions.empty() && vertexColors.size() == positions.size(); }
+
+    bool hasTriangleColors() const { return !triangles.empty() && triangleColors.size() == triangles.size(); }
+    const Rgba& colorOf(std::size_t triangle) const
+    {
+        return hasTriangleColors() ? triangleColors[triangle] : color;
+    }
 
     bool hasNormals() const { return !positions.empty() && normals.size() == positions.size(); }
     bool hasUvs() const { return !positions.empty() && uvs.size() == positions.size(); }

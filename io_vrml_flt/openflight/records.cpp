@@ -138,13 +138,13 @@ std::size_t vertexRecordSize(bool hasNormal, bool hasUv)
     return hasUv ? size::VertexColorUv : size::VertexColor;
 }
 
-void writeVertex(ByteWriter& w, const Vec3d& p, const Vec3f* normal, const Vec2f* uv)
+void writeVertex(ByteWriter& w, const Vec3d& p, const Vec3f* normal, const Vec2f* uv, const Rgba* color)
 {
     const std::uint16_t op = normal ? (uv ? opcode::VertexNormalUv : opcode::VertexNormal)
                                     : (uv ? opcode::VertexColorUv : opcode::VertexColor);
     recordHeader(w, op, vertexRecordSize(normal != nullptr, uv != nullptr));
     w.u16(0);  // color name index
-    w.u16(kVertexNoColor);
+    w.u16(color ? kVertexPackedColor : kVertexNoColor);
     for (double x : p)
         w.f64(x);
     if (normal)
@@ -153,8 +153,8 @@ void writeVertex(ByteWriter& w, const Vec3d& p, const Vec3f* normal, const Vec2f
         w.f32((*uv)[0]);
         w.f32((*uv)[1]);
     }
-    w.u32(0);   // packed color
-    w.i32(-1);  // color index
+    w.u32(color ? packColor(*color) : 0);  // packed color
+    w.i32(-1);                            // color index
     if (normal)
         w.i32(0);
 }
@@ -246,17 +246,20 @@ void writeContinuedRecord(ByteWriter& w, std::uint16_t op, const std::vector<std
 }
 
 void writeLocalVertexPool(ByteWriter& w, const std::vector<Vec3d>& positions,
-                          const std::vector<Vec3f>& normals, const std::vector<Vec2f>& uvs)
+                          const std::vector<Vec3f>& normals, const std::vector<Vec2f>& uvs,
+                          const std::vector<Rgba>& colors)
 {
-    const bool hasNormals = !normals.empty(), hasUvs = !uvs.empty();
+    const bool hasNormals = !normals.empty(), hasUvs = !uvs.empty(), hasColors = !colors.empty();
     std::vector<std::uint8_t> body;
     body.reserve(8 + positions.size() * (24 + (hasNormals ? 12 : 0) + (hasUvs ? 8 : 0)));
     ByteWriter b(body);
     b.u32(static_cast<std::uint32_t>(positions.size()));
-    b.u32(kPoolPosition | (hasNormals ? kPoolNormal : 0) | (hasUvs ? kPoolBaseUv : 0));
+    b.u32(kPoolPosition | (hasColors ? kPoolRgba : 0) | (hasNormals ? kPoolNormal : 0) | (hasUvs ? kPoolBaseUv : 0));
     for (std::size_t i = 0; i < positions.size(); ++i) {
         for (double x : positions[i])
             b.f64(x);
+        if (hasColors)
+            b.u32(packColor(colors[i]));
         if (hasNormals)
             vec3(b, normals[i]);
         if (hasUvs) {

@@ -33,10 +33,12 @@ constexpr std::uint32_t kHeaderSaveNormals = 0x80000000u;
 constexpr std::uint32_t kFacePackedColor = 0x10000000u;
 constexpr std::uint32_t kFaceNoAltColor = 0x20000000u;
 constexpr std::uint16_t kVertexNoColor = 0x2000;
-constexpr std::uint32_t kPoolPosition = 0x80000000u, kPoolNormal = 0x10000000u, kPoolBaseUv = 0x08000000u;
+constexpr std::uint16_t kVertexPackedColor = 0x1000;
+constexpr std::uint32_t kPoolPosition = 0x80000000u, kPoolRgba = 0x20000000u, kPoolNormal = 0x10000000u,
+                        kPoolBaseUv = 0x08000000u;
 
 enum class DrawType : std::uint8_t { SingleSided = 0, TwoSided = 1 };
-enum class LightMode : std::uint8_t { FaceColor = 0, FaceColorLit = 2 };
+enum class LightMode : std::uint8_t { FaceColor = 0, VertexColor = 1, FaceColorLit = 2, VertexColorLit = 3 };
 enum class PrimitiveType : std::int16_t { TriangleStrip = 1, TriangleFan = 2, QuadStrip = 3, IndexedPolygon = 4 };
 
 // The 8-byte ID field holds 7 characters; longer names also get a Long ID record.
@@ -73,7 +75,7 @@ void writeColorPalette(ByteWriter& w);
 void writeMaterial(ByteWriter& w, const MaterialFields& m);
 void writeVertexPalette(ByteWriter& w, std::uint32_t paletteBytes);  // header + all vertex records
 // Vertex record for one vertex: 68/69/70/71 depending on the attributes given.
-void writeVertex(ByteWriter& w, const Vec3d& p, const Vec3f* normal, const Vec2f* uv);
+void writeVertex(ByteWriter& w, const Vec3d& p, const Vec3f* normal, const Vec2f* uv, const Rgba* color = nullptr);
 std::size_t vertexRecordSize(bool hasNormal, bool hasUv);
 void writeGroup(ByteWriter& w, const std::string& name);
 void writeLod(ByteWriter& w, const std::string& name, double switchIn, double switchOut, const Vec3d& center);
@@ -88,7 +90,8 @@ void writePush(ByteWriter& w);
 void writePop(ByteWriter& w);
 // Variable-length records: longer than one record, they go on in Continuation records.
 void writeLocalVertexPool(ByteWriter& w, const std::vector<Vec3d>& positions,
-                          const std::vector<Vec3f>& normals, const std::vector<Vec2f>& uvs);
+                          const std::vector<Vec3f>& normals, const std::vector<Vec2f>& uvs,
+                          const std::vector<Rgba>& colors = {});
 // 16-bit indices when every index fits, else 32-bit.
 void writeMeshPrimitive(ByteWriter& w, PrimitiveType type, const std::vector<std::uint32_t>& indices);
 // Body (without the 4-byte header) as `op` plus Continuation records; pads the last one to 4.

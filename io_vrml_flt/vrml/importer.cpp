@@ -6,6 +6,9 @@
 #include "vrml/proto.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <unordered_map>
@@ -73,6 +76,28 @@ std::string stripUrl(std::string url, std::string* fragment = nullptr)
     return url;
 }
 
+// KiCad StepUp writes "#kicad StepUp wrl exported" right under the VRML header; KiCad's
+// 3D model library is made with it. Only the leading comment lines are looked at.
+bool isKicadStepUpExport(std::string_view text)
+{
+    size_t pos = 0;
+    for (int line = 0; line < 8 && pos < text.size(); ++line) {
+        const size_t end = std::min(text.find('\n', pos), text.size());
+        std::string_view l = text.substr(pos, end - pos);
+        if (!l.empty() && l[0] == '#') {
+            std::string lower(l);
+            std::transform(lower.begin(), lower.end(), lower.begin(),
+                           [](unsigned char c) { return char(std::tolower(c)); });
+            if (lower.find("kicad stepup") != std::string::npos)
+                return true;
+        } else if (l.find_first_not_of(" \t\r") != std::string_view::npos) {
+            return false;  // the first node: no more header comments
+        }
+        pos = end + 1;
+    }
+    return false;
+}
+
 class Importer {
 public:
     explicit Importer(const ImportOptions& options) : options_(options), ctx_{result_.scene, options, {}, {}, {}, 0, {}, {}, {}}
@@ -99,6 +124,7 @@ public:
             text = source.text;
         }
         result_.scene.stats.bytesRead += text.size();
+        const bool kicad = options_.detectKicadUnits && isKicadStepUpExport(text);  // before the text is freed
         ParseOptions parse = parseOptions(fileName);
         if (options_.progress)
             parse.progress = [this](size_t done, size_t total) {
@@ -113,8 +139,7 @@ public:
         }
         result_.scene.version = parsed.version == VrmlVersion::V1 ? 1 : 2;
         openFiles_.push_back(canonical(fileName));
-        evaluate(parsed, fileName, Mat4::scale({options_.unitScale, options_.unitScale, options_.unitScale}), Owner{},
-                 fs::path(fileName).filename().string());
+        evaluate(parsed, fileName, rootTransform(kicad), Owner{}, fs::path(fileName).filename().string());
         if (ctx_.stopped()) {
             result_.error = ctx_.error;
             result_.scene.parts.clear();
@@ -125,6 +150,20 @@ public:
     }
 
 private:
+    // Unit scale, KiCad's 0.1-inch units when the header says so, and the up axis.
+    Mat4 rootTransform(bool kicad)
+    {
+        ImportAssumptions& a = result_.assumed;
+        a.upAxis = options_.upAxis;
+        a.kicadUnits = kicad;
+        a.fileScale = a.kicadUnits ? 2.54 : 1.0;
+        const double s = options_.unitScale * a.fileScale;
+        const Mat4 scale = Mat4::scale({s, s, s});
+        if (options_.upAxis == UpAxis::YUpToZUp)
+            return Mat4::rotation({1, 0, 0}, std::acos(-1.0) / 2) * scale;
+        return scale;
+    }
+
     // Shapes whose geometry was unsupported or all bad leave empty parts behind.
     void dropEmptyParts()
     {
@@ -262,6 +301,21 @@ ImportResult importVrmlFile(const std::string& path, const ImportOptions& option
         return r;
     }
     return Importer(options).run(file.bytes(), path, [&file] { file.release(); });
+}
+
+std::string ImportAssumptions::describe(double unitScale) const
+{
+    char text[400];
+    std::snprintf(text, sizeof text, "%s; %s",
+                  upAxis == UpAxis::YUpToZUp ? "up axis: +Y in the file, rotated to +Z (VRML convention)"
+                                             : "up axis: kept as in the file (+Z for CAD exports)",
+                  kicadUnits ? "units: KiCad StepUp header found, file in 0.1 inch, scaled by 2.54 to mm" : "units: as in the file");
+    std::string out = text;
+    if (unitScale != 1.0) {
+        std::snprintf(text, sizeof text, ", then unit scale %g", unitScale);
+        out += text;
+    }
+    return out;
 }
 
 }  // namespace cadlod::vrml

@@ -11,8 +11,17 @@
 
 namespace cadlod::vrml {
 
+// Which way is up in the file. VRML's convention is +Y, OpenFlight's +Z; CAD exporters
+// (FreeCAD, KiCad StepUp, OCCT, robot libraries) write their native Z-up coordinates into
+// VRML, so Keep is the default and YUpToZUp is for files that follow VRML's convention.
+enum class UpAxis { Keep, YUpToZUp };
+
 struct ImportOptions {
     double unitScale = 1.0;            // applied to the world transform (e.g. 0.001: mm -> m)
+    UpAxis upAxis = UpAxis::Keep;      // YUpToZUp: rotate +90 degrees about X, (x, y, z) -> (x, -z, y)
+    // KiCad's 3D models (header comment "#kicad StepUp wrl exported") are in 0.1 inch:
+    // scale them by 2.54 to millimetres (before unitScale) when the header says so.
+    bool detectKicadUnits = true;
     bool recomputeNormals = false;     // ignore file normals, use creaseAngle
     int maxInlineDepth = 32;
     int maxNesting = 400;
@@ -26,8 +35,17 @@ struct ImportOptions {
     std::function<void(double fraction)> progress;  // main file parse progress, 0..1
 };
 
+// What the importer assumed about the file's axes and units, for the log.
+struct ImportAssumptions {
+    bool kicadUnits = false;   // the KiCad StepUp header was found and 2.54 applied
+    double fileScale = 1.0;    // 2.54 for KiCad, else 1 (before unitScale)
+    UpAxis upAxis = UpAxis::Keep;
+    std::string describe(double unitScale) const;  // one sentence
+};
+
 struct ImportResult {
     Scene scene;
+    ImportAssumptions assumed;
     std::string error;  // non-empty: the file could not be read at all
     bool ok() const { return error.empty(); }
 };

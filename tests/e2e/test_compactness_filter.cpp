@@ -75,3 +75,36 @@ TEST(CompactnessFilter, SavedFaceQualityIsCompactness)
     EXPECT_EQ(std::stoi(match[1]), in.fn);
     EXPECT_NEAR(std::stod(match[3]), minQ, 1e-3);
 }
+
+// The faces are painted by compactness on a fixed 0..1 scale (red 0, yellow 0.5, green 1)
+// and the log says so (issue 16, item 13: the filter used to leave the mesh as it was).
+TEST(CompactnessFilter, FacesArePaintedRedToGreenOnAFixedScale)
+{
+    const std::string dir = scratchDir("compactness_colors");
+    TestMesh in;
+    makeCadLikeMesh(in);
+    ASSERT_TRUE(savePly(dir + "/in.ply", in));
+    writeText(dir + "/compactness.mlx", mlxScript({mlxFilter("Compute Triangle Compactness")}));
+    const ServerRun run = runMeshlabServer(
+        {"-i", dir + "/in.ply", "-o", dir + "/out.ply", "-m", "fq", "fc", "-s", dir + "/compactness.mlx"});
+    ASSERT_TRUE(run.ok()) << run.output;
+    EXPECT_NE(run.output.find("painted by compactness, fixed scale: red 0"), std::string::npos) << run.output;
+
+    TestMesh out;
+    int mask = 0;
+    std::string error;
+    ASSERT_TRUE(loadPly(dir + "/out.ply", out, mask, error)) << error;
+    ASSERT_TRUE(mask & vcg::tri::io::Mask::IOM_FACECOLOR) << "no face colour saved";
+    int slivers = 0, good = 0;
+    for (const auto& f : out.face) {
+        const double c = heronCompactness(f.cP(0), f.cP(1), f.cP(2));
+        const double red = std::min(1.0, 2.0 * (1.0 - c)), green = std::min(1.0, 2.0 * c);
+        EXPECT_NEAR(f.cC()[0], 255.0 * red, 2.0);
+        EXPECT_NEAR(f.cC()[1], 255.0 * green, 2.0);
+        EXPECT_EQ(f.cC()[2], 0);
+        slivers += c < 0.1 && f.cC()[0] == 255 && f.cC()[1] < 60;
+        good += c > 0.99 && f.cC()[1] == 255 && f.cC()[0] < 5;
+    }
+    EXPECT_GT(slivers, 10) << "the stretched cylinder's strips are red";
+    EXPECT_EQ(good, 1) << "the equilateral triangle is green";
+}

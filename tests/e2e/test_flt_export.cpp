@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 using namespace cadlod::test;
@@ -109,4 +110,77 @@ DEF Pin Transform { translation 5 0 0 children [
     }
     EXPECT_EQ(red, 2u);
     EXPECT_EQ(blue, 3u);
+}
+
+// One body with a colour per face (colorPerVertex FALSE), as FreeCAD exports it: the
+// .flt keeps every face's colour, not the part's (issue 16: "one grey", "all gold").
+TEST(FltExport, VrmlFaceColorsSurviveInOneObject)
+{
+    const std::string dir = scratchDir("flt_export_face_colors");
+    writeText(dir + "/body.wrl", R"(#VRML V2.0 utf8
+DEF Body Shape {
+  appearance Appearance { material Material { diffuseColor 0.8 0.6 0.2 } }
+  geometry IndexedFaceSet {
+    coord Coordinate { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0, 0 0 1, 1 0 1, 1 1 1, 0 1 1 ] }
+    coordIndex [ 0 2 1 -1 0 3 2 -1  4 5 6 -1 4 6 7 -1  0 1 5 -1 0 5 4 -1
+                 1 2 6 -1 1 6 5 -1  2 3 7 -1 2 7 6 -1  3 0 4 -1 3 4 7 -1 ]
+    colorPerVertex FALSE
+    color Color { color [ 0.8 0.6 0.2, 0.75 0.75 0.75 ] }
+    colorIndex [ 0 0 1 1 0 0 1 1 0 0 1 1 ]
+  }
+}
+)");
+    const std::string flt = dir + "/body.flt";
+    const ServerRun run = runMeshlabServer({"-i", dir + "/body.wrl", "-o", flt});
+    ASSERT_TRUE(run.ok()) << run.output;
+    const OsgProbe probe = probeWithOsg(flt);
+    ASSERT_TRUE(probe.loaded);
+    ASSERT_EQ(probe.outsideLods.size(), 12u);
+    std::size_t gold = 0, silver = 0;
+    for (const OsgTriangle& t : probe.outsideLods) {
+        gold += std::abs(t.color[0] - 0.8f) < 0.01f && std::abs(t.color[2] - 0.2f) < 0.01f;
+        silver += std::abs(t.color[0] - 0.75f) < 0.01f && std::abs(t.color[2] - 0.75f) < 0.01f;
+    }
+    EXPECT_EQ(gold, 6u);
+    EXPECT_EQ(silver, 6u);
+}
+
+// A colour per vertex (colorPerVertex TRUE) is written per vertex; a file without one gets
+// no vertex colours, so face colours stay what OpenSceneGraph draws.
+TEST(FltExport, VrmlVertexColorsSurviveOnlyWhereTheFileHasThem)
+{
+    const std::string dir = scratchDir("flt_export_vertex_colors");
+    writeText(dir + "/square.wrl", R"(#VRML V2.0 utf8
+Shape { geometry IndexedFaceSet {
+  coord Coordinate { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }
+  coordIndex [ 0 1 2 -1 0 2 3 -1 ]
+  color Color { color [ 1 0 0, 0 1 0, 0 0 1, 1 1 1 ] }
+} }
+)");
+    const std::string flt = dir + "/square.flt";
+    const ServerRun run = runMeshlabServer({"-i", dir + "/square.wrl", "-o", flt});
+    ASSERT_TRUE(run.ok()) << run.output;
+    const OsgProbe probe = probeWithOsg(flt);
+    ASSERT_TRUE(probe.loaded);
+    ASSERT_EQ(probe.outsideLods.size(), 2u);
+    int red = 0;
+    for (const OsgTriangle& t : probe.outsideLods) {
+        ASSERT_TRUE(t.hasCornerColors);
+        for (int k = 0; k < 3; ++k)
+            red += t.position[k][0] == 0 && t.position[k][1] == 0 && t.cornerColor[k][0] > 0.99f &&
+                   t.cornerColor[k][1] < 0.01f;
+    }
+    EXPECT_EQ(red, 2) << "the corner at the origin is red in both triangles";
+
+    writeText(dir + "/plain.wrl", R"(#VRML V2.0 utf8
+Shape { appearance Appearance { material Material { diffuseColor 0 0 1 } }
+  geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 0, 1 1 0 ] } coordIndex [ 0 1 2 ] } }
+)");
+    const ServerRun plain = runMeshlabServer({"-i", dir + "/plain.wrl", "-o", dir + "/plain.flt"});
+    ASSERT_TRUE(plain.ok()) << plain.output;
+    const OsgProbe p = probeWithOsg(dir + "/plain.flt");
+    ASSERT_TRUE(p.loaded);
+    ASSERT_EQ(p.outsideLods.size(), 1u);
+    EXPECT_FALSE(p.outsideLods[0].hasCornerColors);
+    EXPECT_GT(p.outsideLods[0].color[2], 0.99f);
 }

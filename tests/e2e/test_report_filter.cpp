@@ -102,3 +102,37 @@ TEST(ReportFilter, SameLayerAsOriginalIsAClearError)
               std::string::npos)
         << run.output;
 }
+
+// A layer that was never simplified, against a mesh it has nothing to do with, is refused
+// with the reason; a pair cadlod has no record of is reported with a clear warning
+// (issue 16, item 10: it used to compare with layer 0 without a word).
+TEST(ReportFilter, UnrelatedLayersAreRefusedAndUnrecordedPairsWarned)
+{
+    const std::string dir = scratchDir("report_filter_unrelated");
+    TestMesh sphere, far, fine;
+    vcg::tri::Sphere(sphere, 2);
+    vcg::tri::Sphere(far, 2);
+    for (auto& v : far.vert)
+        v.P() += vcg::Point3f(100, 0, 0);
+    vcg::tri::Sphere(fine, 3);
+    ASSERT_TRUE(savePly(dir + "/sphere.ply", sphere));
+    ASSERT_TRUE(savePly(dir + "/far.ply", far));
+    ASSERT_TRUE(savePly(dir + "/fine.ply", fine));
+    writeText(dir + "/report.mlx",
+              mlxScript({mlxFilter("Simplification Report", {mlxParam("RichMesh", "original", "0")})}));
+
+    const ServerRun refused = runMeshlabServer({"-i", dir + "/sphere.ply", "-i", dir + "/far.ply", "-s",
+                                                dir + "/report.mlx"});
+    EXPECT_FALSE(refused.ok());
+    EXPECT_NE(refused.output.find("\"far.ply\" cannot have been simplified from \"sphere.ply\": their bounding "
+                                  "boxes do not overlap"),
+              std::string::npos)
+        << refused.output;
+
+    const ServerRun warned = runMeshlabServer({"-i", dir + "/fine.ply", "-i", dir + "/sphere.ply", "-s",
+                                               dir + "/report.mlx"});
+    ASSERT_TRUE(warned.ok()) << warned.output;
+    EXPECT_NE(warned.output.find("are not levels of one LOD set; cadlod has no record"), std::string::npos)
+        << warned.output;
+    EXPECT_EQ(warned.output.find("more faces"), std::string::npos) << warned.output;
+}

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 using namespace cadlod;
 
 namespace {
@@ -147,4 +149,60 @@ TEST(MeshIo, TheMeshesOfOneLodSetBecomeOneModel)
     std::vector<mesh_io::LodLayer<CoreMesh>> noLevel0{{&level1, {"one"}}};
     EXPECT_FALSE(mesh_io::lodSetToModel(noLevel0, 3, model, stats, error));
     EXPECT_EQ(error, "LOD set 3: no layer holds level 0 (the original)");
+}
+
+namespace {
+
+// Boundary half-edges: directed edges whose opposite no face has.
+int boundaryEdges(const CoreMesh& m)
+{
+    std::map<std::pair<const CoreVertex*, const CoreVertex*>, int> directed;
+    for (const auto& f : m.face)
+        if (!f.IsD())
+            for (int k = 0; k < 3; ++k)
+                ++directed[{f.cV(k), f.cV((k + 1) % 3)}];
+    int open = 0;
+    for (const auto& [edge, count] : directed)
+        if (edge.first != edge.second && !directed.count({edge.second, edge.first}))
+            open += count;
+    return open;
+}
+
+}  // namespace
+
+// A closed tetrahedron exported with one corner split in two (0 and 4) and two slivers
+// between them, as a CAD mesher writes it; coordinates rounded by the exporter put both
+// corners on one point. Welding makes the slivers repeat a vertex: the importer removes
+// them (issue 16, item 5), counts them, and the mesh stays closed.
+TEST(MeshIo, FacesRepeatingAVertexAfterWeldingAreRemovedAndCounted)
+{
+    vrml::Scene scene;
+    vrml::Part body;
+    body.name = "BODY";
+    body.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, 0}};
+    body.triangles = {0, 2, 1, 4, 1, 3, 4, 3, 2, 1, 2, 3, /* slivers */ 0, 1, 4, 0, 4, 2};
+    scene.parts = {body};
+    CoreMesh m;
+    mesh_io::SceneToMeshStats stats;
+    mesh_io::sceneToMesh(scene, m, {}, nullptr, &stats);
+    EXPECT_EQ(stats.facesRepeatingVertex, 2);
+    EXPECT_EQ(stats.mergedVertices, 1);
+    EXPECT_EQ(m.fn, 4);
+    EXPECT_EQ(int(m.face.size()), 4) << "compacted";
+    for (const auto& f : m.face)
+        EXPECT_TRUE(f.cV(0) != f.cV(1) && f.cV(1) != f.cV(2) && f.cV(2) != f.cV(0));
+    EXPECT_EQ(boundaryEdges(m), 0) << "still closed";
+    auto part = facePartHandle(m);
+    for (std::size_t i = 0; i < m.face.size(); ++i)
+        EXPECT_EQ(part[i], 0) << "part ids follow the compaction";
+
+    // Without welding nothing repeats a vertex and nothing is removed.
+    vrml::Scene again;
+    again.parts = {body};
+    CoreMesh soup;
+    mesh_io::SceneToMeshOptions keep;
+    keep.mergeVertices = false;
+    mesh_io::sceneToMesh(again, soup, keep, nullptr, &stats);
+    EXPECT_EQ(stats.facesRepeatingVertex, 0);
+    EXPECT_EQ(soup.fn, 6);
 }

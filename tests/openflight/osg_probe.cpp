@@ -110,6 +110,13 @@ private:
             if (c && !c->empty()) {
                 const osg::Vec4& col = c->size() == v->size() ? (*c)[f.indices[t]] : (*c)[0];
                 tri.color = {col.r(), col.g(), col.b(), col.a()};
+                if (c->size() == v->size() && c->getBinding() == osg::Array::BIND_PER_VERTEX) {
+                    tri.hasCornerColors = true;
+                    for (int k = 0; k < 3; ++k) {
+                        const osg::Vec4& ck = (*c)[f.indices[t + k]];
+                        tri.cornerColor[k] = {ck.r(), ck.g(), ck.b(), ck.a()};
+                    }
+                }
             }
             out.push_back(tri);
         }

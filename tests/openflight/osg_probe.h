@@ -13,7 +13,9 @@ struct OsgTriangle {
     std::array<std::array<float, 3>, 3> position{};
     std::array<std::array<float, 3>, 3> normal{};
     bool hasNormals = false;
-    std::array<float, 4> color{1, 1, 1, 1};
+    std::array<float, 4> color{1, 1, 1, 1};  // the first corner's
+    std::array<std::array<float, 4>, 3> cornerColor{};
+    bool hasCornerColors = false;  // a colour per vertex (else one for the whole geometry)
 };
 
 struct OsgLodChild {
