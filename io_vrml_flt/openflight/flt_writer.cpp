@@ -1,4 +1,5 @@
 #include "flt_writer.h"
+#include "atomic_file.h"
 
 #include "triangle_strip.h"
 
@@ -248,14 +249,8 @@ bool writeOpenFlightFile(const std::string& path, const LodModel& model, const W
         error = path + ": " + error;
         return false;
     }
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-        error = path + ": cannot write the file";
-        return false;
-    }
-    return true;
+    // Through a temporary file renamed into place: never a truncated .flt (atomic_file.h).
+    return writeFileAtomically(path, bytes, error);
 }
 
 }  // namespace cadlod::flt
