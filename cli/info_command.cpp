@@ -3,6 +3,7 @@
 #include "cli_options.h"
 #include "commands.h"
 #include "mesh_files.h"
+#include "progress_bar.h"
 
 #include "core/hausdorff.h"
 
@@ -36,6 +37,7 @@ void printFltLevels(const std::string& path)
 
 void runInfo(const std::string& path)
 {
+    progress::enable(false);
     CoreMesh m;
     const LoadedMesh loaded = loadMesh(path, m, ImportSettings{});
     const vcg::Box3d box = liveVertexBox(m);

@@ -10,7 +10,8 @@ namespace {
 
 double percentOf(double value, double whole) { return whole > 0 ? 100.0 * value / whole : 0.0; }
 
-// Pixels an error of `error` covers at distance `d` (the inverse of projectedErrorDistance).
+// Pixels an error of `error` covers at distance `d` (the inverse of projectedErrorDistance);
+// at a level's switch-out (near) distance, the largest it is ever seen at.
 double pixelsAt(double error, double d, const ViewParams& view)
 {
     if (!(d > 0) || d >= kNeverCulled)
@@ -56,7 +57,7 @@ nlohmann::json levelsJson(const LodSetResult& r, const ViewParams& view)
                          {"hausdorffMean", l.hausdorffMean},
                          {"hausdorffMaxPercentDiag", percentOf(l.hausdorffMax, r.modelSize)},
                          {"hausdorffMeanPercentDiag", percentOf(l.hausdorffMean, r.modelSize)},
-                         {"errorPixelsAtSwitchIn", pixelsAt(l.hausdorffMax, l.switchOut, view)},
+                         {"errorPixelsAtSwitchOut", pixelsAt(l.hausdorffMax, l.switchOut, view)},
                          {"switchOut", l.switchOut},
                          {"switchIn", rangeJson(l.switchIn)},
                          {"compactness", compactnessJson(r.compactness[k])}};

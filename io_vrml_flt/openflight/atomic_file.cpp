@@ -47,7 +47,9 @@ std::string createTemporaryNextTo(const std::string& path, std::string& error)
         error = path + ": cannot create a temporary file next to it: " + std::strerror(errno);
         return {};
     }
-    ::fchmod(fd, 0644);
+    const mode_t mask = ::umask(0);  // mkstemp makes it 0600: give it the usual 0666 & ~umask
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
     ::close(fd);
     return pattern;
 }

@@ -81,12 +81,12 @@ TEST(CliConvert, ReportHasInputOptionsLevelsAndTimings)
     const auto& levels = r.at("levels");
     for (std::size_t k = 1; k < levels.size(); ++k) {
         const auto& l = levels[k];
-        for (const char* f : {"faces", "hausdorffMax", "hausdorffMaxPercentDiag", "errorPixelsAtSwitchIn",
+        for (const char* f : {"faces", "hausdorffMax", "hausdorffMaxPercentDiag", "errorPixelsAtSwitchOut",
                               "switchOut", "switchIn", "compactness", "simplification"})
             EXPECT_TRUE(l.contains(f)) << "level " << k << " " << f;
         EXPECT_LT(l.at("faces").get<int>(), levels[k - 1].at("faces").get<int>());
         // Switched in where its error projects to at most the pixel error.
-        EXPECT_LE(l.at("errorPixelsAtSwitchIn").get<double>(), 2.0 * 1.001) << "level " << k;
+        EXPECT_LE(l.at("errorPixelsAtSwitchOut").get<double>(), 2.0 * 1.001) << "level " << k;
         EXPECT_TRUE(l.at("simplification").contains("relaxed"));
     }
     EXPECT_EQ(levels.back().at("switchIn"), "never");
