@@ -1,60 +1,120 @@
 #!/usr/bin/env bash
-# Converts many CAD exports in parallel, one meshlabserver per file, each with a timeout:
-#   scripts/batch_convert.sh [-j JOBS] [-s SCRIPT.mlx] [-t SECONDS] OUT_DIR FILE|DIR...
-# Every .wrl/.wrz/.vrml/.wrl.gz found becomes OUT_DIR/<name>.flt (an existing output is
-# never overwritten: that file is reported as skipped). Prints one status line per file
-# and a total; exits 1 if any file failed. Default script: docs/examples/cad_mm_to_flt.mlx.
+# Converts many CAD exports with `cadlod convert`, scheduled by GNU parallel:
+#   scripts/batch_convert.sh [options] OUT_DIR FILE|DIR... [-- cadlod convert options]
+# Every .wrl/.wrz/.vrml/.wrl.gz/.vrml.gz under the inputs (symbolic links followed) becomes
+# OUT_DIR/<name>.flt, <name> being the file name without that extension only
+# (PinHeader_1x01_P2.00mm_Vertical.wrl -> PinHeader_1x01_P2.00mm_Vertical.flt), with its
+# JSON report in OUT_DIR/reports/<name>.json and its log in OUT_DIR/logs/<name>.log. Two
+# inputs with the same <name> are a collision: both fail, neither is converted. An existing
+# output is kept (SKIP). One status line per file, a total, exit 1 if any file failed.
+# Options:
+#   -j JOBS            jobs per machine (GNU parallel -j; default: one per core)
+#   -S SSHLOGIN        GNU parallel --sshlogin, repeatable (e.g. -S 8/node1 -S 8/node2 -S :);
+#                      remote machines need cadlod on their PATH (or --cadlod) and the same
+#                      paths (a shared file system)
+#   --joblog FILE      GNU parallel job log (default OUT_DIR/joblog.txt)
+#   --resume           skip the jobs the job log records as run (after an interruption)
+#   --resume-failed    also retry the failed ones
+#   -t SECONDS         per-file timeout (default 1800)
+#   --cadlod PATH      the cadlod executable (default: $CADLOD, cadlod on PATH, or build/cli/cadlod)
+# Default convert options: --unit mm (CAD exports); anything after -- replaces them.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-BUILD="${CADLOD_BUILD_DIR:-$ROOT/build}"
-jobs=$(nproc) script="$ROOT/docs/examples/cad_mm_to_flt.mlx" timeout_s=1800
-while getopts "j:s:t:" opt; do
-  case $opt in
-    j) jobs=$OPTARG ;; s) script=$(realpath "$OPTARG") ;; t) timeout_s=$OPTARG ;;
-    *) sed -n '2,7p' "$0" >&2; exit 2 ;;
+usage() { sed -n '2,23p' "$0" >&2; exit 2; }
+
+jobs=100% timeout_s=1800 joblog="" resume=() sshlogins=() cadlod="${CADLOD:-}"
+positional=() convert_opts=(--unit mm)
+while [ $# -gt 0 ]; do
+  case "$1" in
+    -j) jobs=$2; shift ;;
+    -S|--sshlogin) sshlogins+=(--sshlogin "$2"); shift ;;
+    --joblog) joblog=$2; shift ;;
+    --resume) resume=(--resume) ;;
+    --resume-failed) resume=(--resume-failed) ;;
+    -t) timeout_s=$2; shift ;;
+    --cadlod) cadlod=$2; shift ;;
+    -h|--help) usage ;;
+    --) shift; convert_opts=("$@"); break ;;
+    -*) echo "batch_convert.sh: unknown option $1" >&2; usage ;;
+    *) positional+=("$1") ;;
   esac
+  shift
 done
-shift $((OPTIND - 1))
-[ $# -ge 2 ] || { sed -n '2,7p' "$0" >&2; exit 2; }
-out=$(realpath -m "$1"); shift
-server="$BUILD/stage/bin/meshlabserver"
-[ -x "$server" ] || { echo "no staged meshlabserver in $BUILD: run scripts/demo.sh or scripts/test.sh first" >&2; exit 1; }
-mkdir -p "$out/logs"
+[ ${#positional[@]} -ge 2 ] || usage
+command -v parallel >/dev/null || { echo "GNU parallel is missing: run scripts/bootstrap.sh" >&2; exit 1; }
+if [ -z "$cadlod" ]; then
+  cadlod=$(command -v cadlod || echo "${CADLOD_BUILD_DIR:-$ROOT/build}/cli/cadlod")
+fi
+[ -x "$cadlod" ] || { echo "no cadlod executable ($cadlod): build it (scripts/test.sh) or pass --cadlod" >&2; exit 1; }
+cadlod=$(realpath "$cadlod")
+out=$(realpath -m "${positional[0]}")
+inputs=()
+for i in "${positional[@]:1}"; do inputs+=("$(realpath -s "$i")"); done  # absolute, for remote jobs
+joblog=${joblog:-$out/joblog.txt}
+mkdir -p "$out/logs" "$out/reports"
 
-list=$(mktemp)
-trap 'rm -f "$list"; kill $(jobs -p) 2>/dev/null || true' EXIT
-find "$@" -type f \( -iname '*.wrl' -o -iname '*.wrz' -o -iname '*.vrml' -o -iname '*.wrl.gz' \) -print0 | sort -z > "$list"
-total=$(tr -cd '\0' < "$list" | wc -c)
-[ "$total" -gt 0 ] || { echo "no VRML files under: $*" >&2; exit 1; }
-
-# One Xvfb for the whole batch: parallel xvfb-run calls race for display numbers.
-display_file=$(mktemp)
-Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp -noreset 3>"$display_file" >/dev/null 2>&1 &
-for _ in $(seq 50); do [ -s "$display_file" ] && break; sleep 0.1; done
-export DISPLAY=":$(tr -d '[:space:]' < "$display_file")"; rm -f "$display_file"
-
-convert_one() {
-  local in=$1 base name flt log start rc
-  base=$(basename "$in"); name=${base%%.*}
-  flt="$out/$name.flt"; log="$out/logs/$name.log"
-  if [ -e "$flt" ]; then echo "SKIP  $in ($flt exists)"; return 0; fi
-  start=$(date +%s%N)
-  rc=0
-  timeout -k 10 "$timeout_s" "$server" -i "$in" -s "$script" -o "$flt" >"$log" 2>&1 || rc=$?
-  local ms=$(( ($(date +%s%N) - start) / 1000000 ))
-  if [ $rc -eq 0 ] && [ -s "$flt" ]; then
-    echo "OK    $in -> $flt (${ms} ms; $(grep -m1 -o '[0-9]* LOD level(s)' "$log" || true))"
-  else
-    [ $rc -eq 124 ] && reason="timed out after ${timeout_s}s" || reason="exit $rc: $(grep -m1 -iE 'error|cannot|failed' "$log" || tail -n 1 "$log")"
-    echo "FAIL  $in ($reason; log $log)"
-    return 1
-  fi
+# The output name: the file name without one known VRML extension, nothing else.
+output_name() {
+  local base lower
+  base=$(basename "$1"); lower=${base,,}
+  for ext in .wrl.gz .vrml.gz .wrl .wrz .vrml; do
+    if [[ $lower == *"$ext" ]]; then echo "${base:0:${#base}-${#ext}}"; return; fi
+  done
+  echo "$base"
 }
-export -f convert_one
-export out script server timeout_s
+
+list=$(mktemp) names=$(mktemp)
+trap 'rm -f "$list" "$names" "$list.run"' EXIT
+find -L "${inputs[@]}" -type f \( -iname '*.wrl' -o -iname '*.wrz' -o -iname '*.vrml' -o -iname '*.wrl.gz' \
+  -o -iname '*.vrml.gz' \) -print0 | sort -z > "$list"
+total=$(tr -cd '\0' < "$list" | wc -c)
+[ "$total" -gt 0 ] || { echo "no VRML files under: ${inputs[*]}" >&2; exit 1; }
+
+# Collisions: inputs whose output names are equal fail before anything runs.
+collisions=0
+: > "$list.run"
+while IFS= read -r -d '' f; do printf '%s\t%s\n' "$(output_name "$f")" "$f"; done < "$list" > "$names"
+while IFS=$'\t' read -r name f; do
+  if [ "$(cut -f1 "$names" | grep -cxF -- "$name")" -gt 1 ]; then
+    echo "FAIL  $f (output name collision: $out/$name.flt has several inputs)"
+    collisions=$((collisions + 1))
+  else
+    printf '%s\0' "$f" >> "$list.run"
+  fi
+done < "$names"
+
+# One file: SKIP when its output exists, else cadlod convert (which writes through a
+# temporary file: an interrupted job leaves no truncated .flt); a status line either way.
+convert_one() {
+  local in=$1 name flt log rc=0 start ms
+  name=$(output_name "$in"); flt="$out/$name.flt"; log="$out/logs/$name.log"
+  if [ -e "$flt" ]; then echo "SKIP  $in ($flt exists)"; return 0; fi
+  rm -f "$out/.$name.flt.tmp-"* "$out/reports/.$name.json.tmp-"*  # left by a killed run
+  start=$(date +%s%N)
+  env -u DISPLAY timeout -k 10 "$timeout_s" "$cadlod" convert "$in" -o "$flt" --report "$out/reports/$name.json" \
+    --force "${convert_opts[@]}" >"$log" 2>&1 || rc=$?
+  ms=$(( ($(date +%s%N) - start) / 1000000 ))
+  if [ $rc -eq 0 ] && [ -s "$flt" ]; then
+    echo "OK    $in -> $flt (${ms} ms; $(grep -m1 -o '[0-9]* levels' "$log" || true))"
+    return 0
+  fi
+  local reason
+  [ $rc -eq 124 ] && reason="timed out after ${timeout_s}s" || reason="exit $rc: $(grep -m1 'error' "$log" || tail -n 1 "$log")"
+  echo "FAIL  $in ($reason; log $log)"
+  return 1
+}
+convert_opts_str=$(printf '%q ' "${convert_opts[@]}")
+export -f convert_one output_name
+export out cadlod timeout_s convert_opts_str
 
 status=0
-xargs -0 -P "$jobs" -I{} bash -c 'convert_one "$1"' _ {} < "$list" | tee "$out/status.txt" || status=1
-failed=$(grep -c '^FAIL' "$out/status.txt" || true)
-echo "$total file(s): $(grep -c '^OK' "$out/status.txt" || true) converted, $(grep -c '^SKIP' "$out/status.txt" || true) skipped, $failed failed"
-[ "$failed" -eq 0 ] && [ $status -eq 0 ]
+if [ -s "$list.run" ]; then
+  # convert_opts is an array: passed as a quoted string and re-split in the job's shell.
+  parallel -0 --will-cite --line-buffer -j "$jobs" "${sshlogins[@]}" --joblog "$joblog" "${resume[@]}" \
+    --env convert_one --env output_name --env out --env cadlod --env timeout_s --env convert_opts_str \
+    'eval "convert_opts=($convert_opts_str)"; convert_one {}' :::: "$list.run" | tee -a "$out/status.txt" \
+    || status=1
+fi
+converted=$(find "$out" -maxdepth 1 -name '*.flt' | wc -l)
+echo "$total file(s): $converted output(s) in $out, $collisions collision(s), parallel status $status (details: $out/status.txt, $joblog)"
+[ $status -eq 0 ] && [ $collisions -eq 0 ]

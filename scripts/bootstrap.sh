@@ -18,6 +18,7 @@ PACKAGES=(
   xvfb xauth x11-apps xdotool imagemagick
   openscenegraph libopenscenegraph-dev
   libcoin-dev
+  libcli11-dev nlohmann-json3-dev libtbb-dev parallel
 )
 # Fuzzing (tests/fuzz, CADLOD_BUILD_FUZZERS=ON): clang with libFuzzer.
 if [ "${CADLOD_FUZZ_DEPS:-0}" = 1 ]; then

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The main job on the bundled sample: CAD VRML assembly in, OpenFlight LOD set out.
-# Sets up (scripts/bootstrap.sh), builds, converts docs/sample/cad_assembly.wrl.gz through
-# the staged meshlabserver with docs/examples/cad_mm_to_flt.mlx, checks the .flt with
+# Sets up (scripts/bootstrap.sh), builds, converts docs/sample/cad_assembly.wrl.gz with
+# `cadlod convert` (no X server; mm input, screen-space LOD chain), checks the .flt with
 # OpenSceneGraph, and prints a summary. Output goes to a new out/demo-<time>/ directory.
+# The meshlabserver route (docs/examples/cad_mm_to_flt.mlx) is in README.md.
 #   scripts/demo.sh [INPUT.wrl]
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -20,9 +21,9 @@ name="$(basename "$INPUT")"; name="${name%%.*}"
 FLT="$OUT/$name.flt"
 echo "== convert $INPUT"
 start=$(date +%s%N)
-LOG="$OUT/meshlabserver.log"
-if ! xvfb-run -a timeout 600 "$BUILD/stage/bin/meshlabserver" -i "$INPUT" \
-      -s "$ROOT/docs/examples/cad_mm_to_flt.mlx" -o "$FLT" >"$LOG" 2>&1 || [ ! -s "$FLT" ]; then
+LOG="$OUT/cadlod.log"
+if ! env -u DISPLAY timeout 600 "$BUILD/cli/cadlod" convert "$INPUT" -o "$FLT" --unit mm \
+      --report "$OUT/report.json" -q >"$LOG" 2>&1; then
   echo "conversion failed; see $LOG" >&2
   tail -n 20 "$LOG" >&2
   exit 1
@@ -30,13 +31,12 @@ fi
 millis=$(( ($(date +%s%N) - start) / 1000000 ))
 
 echo "== summary"
-grep -E "^io_vrml_flt: VRML" "$LOG" | sed 's/^io_vrml_flt: /  import: /'
-grep -E "^LOG: [0-9] (CAD LOD set|LOD[0-9]+:)" "$LOG" | sed 's/^LOG: [0-9] /  /'
-grep -E "^io_vrml_flt: OpenFlight" "$LOG" | sed 's/^io_vrml_flt: /  export: /'
+"$BUILD/cli/cadlod" info "$FLT" | sed 's/^/  /'
+echo "  report: $OUT/report.json"
 echo
 echo "== OpenSceneGraph reads $FLT (switch ranges in meters)"
 "$BUILD/tests/openflight/osg_flt_probe" "$FLT" > "$OUT/osg_probe.txt"
 grep -E "^lod " "$OUT/osg_probe.txt" | sed 's/^/  /'
 echo "  $(grep -c '^name ' "$OUT/osg_probe.txt") named nodes; parts: $(grep '^name ' "$OUT/osg_probe.txt" | sed 's/^name //' | grep -v -e '^lod[0-9]' -e 'LOD child' | sort -u | tr '\n' ' ')"
-printf '\ninput  %s (%s bytes)\noutput %s (%s bytes)\ntime   %d ms (load, simplify, LOD set, export)\n' \
+printf '\ninput  %s (%s bytes)\noutput %s (%s bytes)\ntime   %d ms (load, LOD chain, export)\n' \
   "$INPUT" "$(stat -c %s "$INPUT")" "$FLT" "$(stat -c %s "$FLT")" "$millis"

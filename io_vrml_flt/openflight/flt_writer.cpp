@@ -1,4 +1,5 @@
 #include "flt_writer.h"
+#include "atomic_file.h"
 
 #include "triangle_strip.h"
 
@@ -308,21 +309,8 @@ bool writeOpenFlightFile(const std::string& path, const LodModel& model, const W
         error = path + ": " + error;
         return false;
     }
-    // stdio rather than a stream: errno says why (no such directory, permission, disk full).
-    errno = 0;
-    std::FILE* out = std::fopen(path.c_str(), "wb");
-    if (!out) {
-        error = path + ": cannot create the file: " + std::strerror(errno);
-        return false;
-    }
-    const bool written = std::fwrite(bytes.data(), 1, bytes.size(), out) == bytes.size();
-    const int writeErrno = errno;
-    const bool closed = std::fclose(out) == 0;
-    if (!written || !closed) {
-        error = path + ": cannot write the file: " + std::strerror(written ? errno : writeErrno);
-        return false;
-    }
-    return true;
+    // Through a temporary file renamed into place: never a truncated .flt (atomic_file.h).
+    return writeFileAtomically(path, bytes, error);
 }
 
 }  // namespace cadlod::flt

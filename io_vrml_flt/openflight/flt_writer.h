@@ -41,6 +41,8 @@ bool validateModel(const LodModel& model, std::string& error);
 
 bool writeOpenFlight(const LodModel& model, const WriteOptions& options, std::vector<std::uint8_t>& out,
                      std::string& error, WriteStats* stats = nullptr);
+// Writes through a temporary file in the same directory, renamed over `path` once
+// complete (atomic_file.h): an interrupted write never leaves a truncated .flt.
 bool writeOpenFlightFile(const std::string& path, const LodModel& model, const WriteOptions& options,
                          std::string& error, WriteStats* stats = nullptr);
 

@@ -1,0 +1,58 @@
+// The options several commands share, declared once on a CLI11 (sub)command: import
+// (units, welding, normals), simplification (stop criteria, protection) and OpenFlight
+// export (units, draw type, objects, records).
+#pragma once
+#include "mesh_files.h"
+#include "core/simplify_params.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace cadlod::cli {
+
+struct ImportArgs {
+    std::string unit = "m";  // mm|cm|m|in|0.1in|<factor>
+    bool noMerge = false;
+    float mergeTolerance = 0.0f;
+    std::string normals = "keep";  // keep|recompute
+};
+
+struct ProtectionArgs {
+    double featureAngle = 30.0;
+    double featurePenalty = 16.0;
+    bool noPartBorders = false;
+    bool noColorBorders = false;
+    bool noBoundary = false;
+    bool noRelax = false;
+};
+
+struct ExportArgs {
+    std::string units = "meters";       // meters|kilometers|feet|inches|nautical-miles
+    std::string drawType = "single";    // single|two
+    std::string objects = "part";       // part|level
+    std::string records = "mesh";       // mesh|face
+};
+
+struct CommonArgs {
+    int threads = 0;  // 0: all cores
+    bool force = false;
+    bool quiet = false;
+};
+
+void addImportOptions(CLI::App& app, ImportArgs& a);
+void addProtectionOptions(CLI::App& app, ProtectionArgs& a);
+void addExportOptions(CLI::App& app, ExportArgs& a);
+void addCommonOptions(CLI::App& app, CommonArgs& a);
+
+// Throws UsageError for a unit that is neither a name nor a positive factor.
+double unitScaleOf(const std::string& unit);
+ImportSettings importSettings(const ImportArgs& a);
+void applyProtection(const ProtectionArgs& a, SimplifyParams& p);
+SaveSettings saveSettings(const ExportArgs& a);
+
+nlohmann::json toJson(const ImportArgs& a);
+nlohmann::json toJson(const ProtectionArgs& a);
+nlohmann::json toJson(const ExportArgs& a);
+
+}  // namespace cadlod::cli

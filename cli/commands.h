@@ -1,0 +1,15 @@
+// The subcommands: each adds itself to the application and runs when chosen.
+#pragma once
+#include <CLI/CLI.hpp>
+
+namespace cadlod::cli {
+
+void addConvertCommand(CLI::App& app);
+void addSimplifyCommand(CLI::App& app);
+void addReportCommand(CLI::App& app);
+void addInfoCommand(CLI::App& app);
+
+// Limits oneTBB to `threads` workers (0: all cores) for the rest of the process.
+void limitThreads(int threads);
+
+}  // namespace cadlod::cli

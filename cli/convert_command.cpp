@@ -1,0 +1,207 @@
+// cadlod convert IN -o OUT.flt: import, LOD chain (screen-space, default) or the paper's
+// percentage list, one OpenFlight LOD model, optional JSON report.
+#include "cli_errors.h"
+#include "cli_options.h"
+#include "commands.h"
+#include "lod_output.h"
+#include "mesh_files.h"
+#include "output_file.h"
+#include "progress_bar.h"
+#include "report_json.h"
+
+#include "core/lod_builder.h"
+#include "core/lod_chain.h"
+#include "flt_writer.h"
+
+#include <chrono>
+#include <deque>
+#include <memory>
+
+namespace cadlod::cli {
+namespace {
+
+struct ConvertArgs {
+    std::string input, output, report;
+    std::string lod = "auto";
+    double pixelError = 1.0, fov = 45.0, viewport = 1080.0, distanceRatio = 2.0, cullPixels = 0.0,
+           proxyPixels = 8.0;
+    bool fromOriginal = false;
+    std::size_t samples = 0;
+    ImportArgs import;
+    ProtectionArgs protection;
+    ExportArgs exporting;
+    CommonArgs common;
+};
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::string baseName(const std::string& path)
+{
+    std::string name = path.substr(path.find_last_of('/') + 1);
+    return name.substr(0, name.find('.'));
+}
+
+ViewParams viewOf(const ConvertArgs& a)
+{
+    ViewParams v;
+    v.fovYDegrees = a.fov;
+    v.viewportHeightPx = a.viewport;
+    v.pixelThreshold = a.pixelError;
+    return v;
+}
+
+// The level meshes live here until the model is written.
+struct LevelStore {
+    std::deque<std::unique_ptr<CoreMesh>> meshes;
+    CoreMesh& add()
+    {
+        meshes.push_back(std::make_unique<CoreMesh>());
+        return *meshes.back();
+    }
+};
+
+LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& store)
+{
+    const auto newLevel = [&](int) -> CoreMesh& { return store.add(); };
+    if (a.lod == "auto") {
+        LodChainOptions o;
+        o.view = viewOf(a);
+        o.distanceRatio = a.distanceRatio;
+        o.proxyPixels = a.proxyPixels;
+        o.cullPixels = a.cullPixels;
+        o.hausdorffSamples = a.samples;
+        applyProtection(a.protection, o.simplify);
+        CoreMesh scratch;
+        return buildLodChain<CoreMesh>(original, scratch, o, newLevel, progress::callback);
+    }
+    LodSetOptions o;
+    o.levels = a.lod;
+    o.view = viewOf(a);
+    o.fromOriginal = a.fromOriginal;
+    o.hausdorffSamples = a.samples;
+    applyProtection(a.protection, o.simplify);
+    return buildLodSet<CoreMesh>(original, o, newLevel, progress::callback);
+}
+
+nlohmann::json optionsJson(const ConvertArgs& a)
+{
+    return {{"lod", a.lod},
+            {"pixelError", a.pixelError},
+            {"fovY", a.fov},
+            {"viewport", a.viewport},
+            {"distanceRatio", a.distanceRatio},
+            {"cullPixels", a.cullPixels},
+            {"proxyPixels", a.proxyPixels},
+            {"fromOriginal", a.fromOriginal},
+            {"samples", a.samples},
+            {"import", toJson(a.import)},
+            {"simplify", toJson(a.protection)},
+            {"export", toJson(a.exporting)}};
+}
+
+void printSummary(const LodSetResult& r, const flt::WriteStats& written, const std::string& output)
+{
+    std::fprintf(stderr, "cadlod: %s: %zu levels, %zu triangles, %zu bytes (model size %.6g)\n", output.c_str(),
+                 r.levels.size(), written.triangles, written.bytes, r.modelSize);
+    std::fprintf(stderr, "level  triangles  hausdorff max (%% diag)  switch out..in\n");
+    for (const LodLevel& l : r.levels)
+        std::fprintf(stderr, "%5d  %9d  %.6g (%.4f%%)  %.6g..%s\n", l.level, l.faces, l.hausdorffMax,
+                     r.modelSize > 0 ? 100.0 * l.hausdorffMax / r.modelSize : 0.0, l.switchOut,
+                     l.switchIn >= kNeverCulled ? "never" : std::to_string(l.switchIn).c_str());
+    for (const std::string& w : r.warnings)
+        std::fprintf(stderr, "cadlod: note: %s\n", w.c_str());
+}
+
+void runConvert(const ConvertArgs& a)
+{
+    if (extensionOf(a.output) != "flt")
+        throw UsageError(a.output + ": convert writes OpenFlight (.flt); use 'cadlod simplify' for PLY/OBJ/STL");
+    checkWritable(a.output, a.common.force);
+    if (!a.report.empty())
+        checkWritable(a.report, a.common.force);
+    const ImportSettings importing = importSettings(a.import);
+    const SaveSettings saving = saveSettings(a.exporting);
+    progress::enable(!a.common.quiet);
+    limitThreads(a.common.threads);
+
+    const auto t0 = Clock::now();
+    CoreMesh original;
+    const LoadedMesh loaded = loadMesh(a.input, original, importing);
+    const double importSeconds = secondsSince(t0);
+
+    const auto t1 = Clock::now();
+    LevelStore store;
+    const LodSetResult result = buildLevels(a, original, store);
+    if (!result.ok())
+        throw InputError(a.input + ": " + result.error);
+    const double lodSeconds = secondsSince(t1);
+
+    const auto t2 = Clock::now();
+    std::vector<CoreMesh*> meshes{&original};
+    for (auto& m : store.meshes)
+        meshes.push_back(m.get());
+    std::size_t skipped = 0;
+    flt::LodModel model = lodMeshesToModel(meshes, result.levels.front().setId, baseName(a.output), skipped);
+    model.units = saving.units;
+    flt::WriteOptions writeOptions = saving.flt;
+    writeOptions.progress = [](int p) { progress::report(p, "Writing OpenFlight"); };
+    flt::WriteStats written;
+    std::string error;
+    if (!flt::writeOpenFlightFile(a.output, model, writeOptions, error, &written))
+        throw InputError(error);
+    const double writeSeconds = secondsSince(t2);
+    progress::finish();
+    if (!a.common.quiet)
+        printSummary(result, written, a.output);
+
+    if (a.report.empty())
+        return;
+    nlohmann::json report{{"command", "convert"},
+                          {"input", {{"path", a.input}, {"format", formatName(loaded.format)}, {"parts", loaded.parts},
+                                     {"faces", result.levels.front().faces}, {"mergedVertices", loaded.mergedVertices}}},
+                          {"output", {{"path", a.output}, {"bytes", written.bytes}, {"triangles", written.triangles},
+                                      {"objects", written.objects}, {"lodNodes", written.lodNodes},
+                                      {"skippedDegenerateFaces", skipped}}},
+                          {"options", optionsJson(a)},
+                          {"modelSize", result.modelSize},
+                          {"levels", levelsJson(result, viewOf(a))},
+                          {"droppedLevels", result.droppedLevels},
+                          {"warnings", result.warnings},
+                          {"timings", {{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds},
+                                       {"writeSeconds", writeSeconds}, {"totalSeconds", secondsSince(t0)}}}};
+    writeJsonFile(a.report, report);
+}
+
+}  // namespace
+
+void addConvertCommand(CLI::App& app)
+{
+    auto args = std::make_shared<ConvertArgs>();
+    CLI::App* cmd = app.add_subcommand("convert", "VRML (or PLY/OBJ/STL/FLT) to an OpenFlight LOD model");
+    cmd->add_option("input", args->input, "Input file")->required();
+    cmd->add_option("-o,--output", args->output, "Output .flt")->required();
+    cmd->add_option("--lod", args->lod,
+                    "auto: screen-space LOD chain; or a quoted list of reductions in % (\"50 60 70 80 90\")")
+        ->capture_default_str();
+    cmd->add_option("--pixel-error", args->pixelError, "Largest error on screen when a level is shown (px)")
+        ->capture_default_str();
+    cmd->add_option("--fov", args->fov, "Vertical field of view of the simulator (degrees)")->capture_default_str();
+    cmd->add_option("--viewport", args->viewport, "Viewport height (px)")->capture_default_str();
+    cmd->add_option("--distance-ratio", args->distanceRatio, "auto: ratio between consecutive level distances")
+        ->capture_default_str();
+    cmd->add_option("--proxy-pixels", args->proxyPixels, "auto: the box proxy serves below this height (px)")
+        ->capture_default_str();
+    cmd->add_option("--cull-pixels", args->cullPixels, "auto: not drawn below this height (px); 0: never culled")
+        ->capture_default_str();
+    cmd->add_flag("--from-original", args->fromOriginal, "List: simplify every level from the original");
+    cmd->add_option("--samples", args->samples, "Hausdorff samples per side (0: automatic)");
+    cmd->add_option("--report", args->report, "Write a JSON report here");
+    addImportOptions(*cmd, args->import);
+    addProtectionOptions(*cmd, args->protection);
+    addExportOptions(*cmd, args->exporting);
+    addCommonOptions(*cmd, args->common);
+    cmd->callback([args] { runConvert(*args); });
+}
+
+}  // namespace cadlod::cli

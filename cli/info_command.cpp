@@ -1,0 +1,64 @@
+// cadlod info IN: format, parts, triangles, bounding box, a units guess and, for .flt, the
+// LOD levels with their ranges.
+#include "cli_options.h"
+#include "commands.h"
+#include "mesh_files.h"
+#include "progress_bar.h"
+
+#include "core/hausdorff.h"
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+namespace cadlod::cli {
+namespace {
+
+// CAD exports are usually in mm: an assembly a few hundred units across is likely mm.
+const char* unitsGuess(double diagonal)
+{
+    if (diagonal > 20.0)
+        return "mm likely (use --unit mm)";
+    if (diagonal > 2.0)
+        return "cm, in or m";
+    return "m likely";
+}
+
+void printFltLevels(const std::string& path)
+{
+    const flt::LodModel model = readFlt(path);
+    std::printf("units        %s (header)\nLOD levels   %zu\n", flt::unitsName(model.units), model.levels.size());
+    for (std::size_t k = 0; k < model.levels.size(); ++k) {
+        const flt::Level& l = model.levels[k];
+        std::printf("  level %zu: %zu triangles, %zu parts, switch out %.6g, in %.6g\n", k, l.triangleCount(),
+                    l.parts.size(), l.switchOut, l.switchIn);
+    }
+}
+
+void runInfo(const std::string& path)
+{
+    progress::enable(false);
+    CoreMesh m;
+    const LoadedMesh loaded = loadMesh(path, m, ImportSettings{});
+    const vcg::Box3d box = liveVertexBox(m);
+    std::printf("file         %s\nformat       %s\nparts        %zu\ntriangles    %d\nvertices     %d\n", path.c_str(),
+                formatName(loaded.format), loaded.parts, m.fn, m.vn);
+    std::printf("bbox         (%.6g %.6g %.6g) .. (%.6g %.6g %.6g), diagonal %.6g\n", box.min[0], box.min[1],
+                box.min[2], box.max[0], box.max[1], box.max[2], box.Diag());
+    if (loaded.format == InputFormat::OpenFlight)
+        printFltLevels(path);
+    else
+        std::printf("units guess  %s\n", unitsGuess(box.Diag()));
+}
+
+}  // namespace
+
+void addInfoCommand(CLI::App& app)
+{
+    auto path = std::make_shared<std::string>();
+    CLI::App* cmd = app.add_subcommand("info", "What a file holds");
+    cmd->add_option("input", *path, "Input file")->required();
+    cmd->callback([path] { runInfo(*path); });
+}
+
+}  // namespace cadlod::cli

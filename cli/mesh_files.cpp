@@ -1,0 +1,205 @@
+#include "mesh_files.h"
+
+#include "cli_errors.h"
+#include "flt_reader.h"
+#include "lod_model_to_mesh.h"
+#include "mesh_to_lod_model.h"
+#include "output_file.h"
+#include "progress_bar.h"
+#include "scene_to_mesh.h"
+#include "vrml/importer.h"
+
+#include <vcg/complex/algorithms/update/topology.h>
+#include <wrap/io_trimesh/export_obj.h>
+#include <wrap/io_trimesh/export_ply.h>
+#include <wrap/io_trimesh/export_stl.h>
+#include <wrap/io_trimesh/import_obj.h>
+#include <wrap/io_trimesh/import_ply.h>
+#include <wrap/io_trimesh/import_stl.h>
+
+namespace cadlod::cli {
+namespace {
+
+bool endsWith(const std::string& s, const std::string& tail)
+{
+    return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+std::string lower(std::string s)
+{
+    for (char& c : s)
+        c = char(std::tolower((unsigned char)c));
+    return s;
+}
+
+void prepareForSimplifier(CoreMesh& m)
+{
+    vcg::tri::Allocator<CoreMesh>::CompactEveryVector(m);
+    vcg::tri::UpdateNormal<CoreMesh>::PerFaceNormalized(m);
+    vcg::tri::UpdateBounding<CoreMesh>::Box(m);
+    vcg::tri::UpdateTopology<CoreMesh>::VertexFace(m);
+}
+
+LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& settings)
+{
+    vrml::ImportOptions options;
+    options.unitScale = settings.unitScale;
+    options.recomputeNormals = settings.recomputeNormals;
+    options.progress = [](double f) { progress::report(int(60 * f), "Reading VRML"); };
+    vrml::ImportResult imported = vrml::importVrmlFile(path, options);
+    if (!imported.ok())
+        throw InputError(imported.error);
+    const auto& kept = imported.scene.diagnostics.kept();
+    for (std::size_t i = 0; i < kept.size() && i < 12; ++i)
+        std::fprintf(stderr, "cadlod: warning: %s: %s: %s\n", kept[i].where.c_str(), kept[i].kind.c_str(),
+                     kept[i].message.c_str());
+    LoadedMesh info;
+    info.format = InputFormat::Vrml;
+    info.parts = imported.scene.parts.size();
+    mesh_io::SceneToMeshOptions toMesh;
+    toMesh.mergeVertices = settings.mergeVertices;
+    toMesh.mergeTolerance = settings.mergeTolerance;
+    info.mergedVertices = mesh_io::sceneToMesh(imported.scene, m, toMesh, progress::callback);
+    if (m.fn == 0)
+        throw InputError(path + ": no triangles in the scene");
+    return info;
+}
+
+LoadedMesh loadFlt(const std::string& path, CoreMesh& m)
+{
+    const flt::LodModel model = readFlt(path);
+    if (model.levels.empty())
+        throw InputError(path + ": no geometry");
+    LoadedMesh info;
+    info.format = InputFormat::OpenFlight;
+    info.fltLevels = model.levels.size();
+    info.fltUnits = model.units;
+    const flt::Level& finest = model.levels[flt::finestLevel(model)];
+    info.parts = finest.parts.size();
+    mesh_io::levelToMesh(finest, m);
+    return info;
+}
+
+template <class Importer>
+LoadedMesh loadWithVcg(const std::string& path, CoreMesh& m, InputFormat format, bool critical(int))
+{
+    int mask = 0;
+    const int rc = Importer::Open(m, path.c_str(), mask);
+    if (rc != 0 && critical(rc))
+        throw InputError(path + ": " + Importer::ErrorMsg(rc));
+    LoadedMesh info;
+    info.format = format;
+    info.parts = 1;
+    return info;
+}
+
+LoadedMesh loadObj(const std::string& path, CoreMesh& m)
+{
+    using Importer = vcg::tri::io::ImporterOBJ<CoreMesh>;
+    Importer::Info oi;
+    const int rc = Importer::Open(m, path.c_str(), oi);
+    if (rc != 0 && Importer::ErrorCritical(rc))
+        throw InputError(path + ": " + Importer::ErrorMsg(rc));
+    LoadedMesh info;
+    info.format = InputFormat::Obj;
+    info.parts = 1;
+    return info;
+}
+
+void saveFlt(const std::string& path, CoreMesh& m, const SaveSettings& settings)
+{
+    flt::LodModel model;
+    model.units = settings.units;
+    mesh_io::LevelOptions options;
+    options.label = "mesh";
+    options.faceColors = true;
+    mesh_io::LevelStats stats;
+    model.levels.push_back(mesh_io::meshToLevel(m, options, stats));
+    std::string error;
+    if (!flt::writeOpenFlightFile(path, model, settings.flt, error))
+        throw InputError(error);
+}
+
+}  // namespace
+
+InputFormat formatOf(const std::string& path)
+{
+    const std::string p = lower(path);
+    for (const char* ext : {".wrl", ".wrz", ".vrml", ".wrl.gz", ".vrml.gz"})
+        if (endsWith(p, ext))
+            return InputFormat::Vrml;
+    if (endsWith(p, ".flt"))
+        return InputFormat::OpenFlight;
+    if (endsWith(p, ".ply"))
+        return InputFormat::Ply;
+    if (endsWith(p, ".obj"))
+        return InputFormat::Obj;
+    if (endsWith(p, ".stl"))
+        return InputFormat::Stl;
+    return InputFormat::Unknown;
+}
+
+const char* formatName(InputFormat format)
+{
+    switch (format) {
+    case InputFormat::Vrml: return "VRML";
+    case InputFormat::OpenFlight: return "OpenFlight";
+    case InputFormat::Ply: return "PLY";
+    case InputFormat::Obj: return "OBJ";
+    case InputFormat::Stl: return "STL";
+    default: return "unknown";
+    }
+}
+
+flt::LodModel readFlt(const std::string& path)
+{
+    flt::LodModel model;
+    std::string error;
+    if (!flt::readOpenFlightFile(path, model, error))
+        throw InputError(error.rfind(path, 0) == 0 ? error : path + ": " + error);
+    return model;
+}
+
+LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& settings)
+{
+    LoadedMesh info;
+    switch (formatOf(path)) {
+    case InputFormat::Vrml: info = loadVrml(path, m, settings); break;
+    case InputFormat::OpenFlight: info = loadFlt(path, m); break;
+    case InputFormat::Ply: info = loadWithVcg<vcg::tri::io::ImporterPLY<CoreMesh>>(
+        path, m, InputFormat::Ply, [](int rc) { return vcg::tri::io::ImporterPLY<CoreMesh>::ErrorCritical(rc); }); break;
+    case InputFormat::Obj: info = loadObj(path, m); break;
+    case InputFormat::Stl: info = loadWithVcg<vcg::tri::io::ImporterSTL<CoreMesh>>(
+        path, m, InputFormat::Stl, [](int rc) { return rc != 0; }); break;
+    default:
+        throw InputError(path + ": unknown input format (VRML .wrl/.wrz/.vrml[.gz], .flt, .ply, .obj, .stl)");
+    }
+    if (m.fn == 0)
+        throw InputError(path + ": no triangles");
+    prepareForSimplifier(m);
+    return info;
+}
+
+void saveMesh(const std::string& path, CoreMesh& m, const SaveSettings& settings)
+{
+    using namespace vcg::tri::io;
+    const std::string ext = extensionOf(path);
+    if (ext == "flt") {
+        saveFlt(path, m, settings);
+        return;
+    }
+    vcg::tri::Allocator<CoreMesh>::CompactEveryVector(m);
+    const int mask = Mask::IOM_VERTNORMAL | Mask::IOM_VERTCOLOR | Mask::IOM_FACECOLOR;
+    std::function<bool(const std::string&)> write;
+    if (ext == "ply")
+        write = [&](const std::string& t) { return ExporterPLY<CoreMesh>::Save(m, t.c_str(), mask, true) == 0; };
+    else if (ext == "obj")
+        write = [&](const std::string& t) { return ExporterOBJ<CoreMesh>::Save(m, t.c_str(), Mask::IOM_VERTNORMAL) == 0; };
+    else if (ext == "stl")
+        write = [&](const std::string& t) { return ExporterSTL<CoreMesh>::Save(m, t.c_str(), true) == 0; };
+    else
+        throw UsageError(path + ": unknown output format (.flt, .ply, .obj, .stl)");
+    writeAtomically(path, write);
+}
+
+}  // namespace cadlod::cli

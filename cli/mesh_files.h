@@ -1,0 +1,48 @@
+// Reading any input the command line accepts into a cadlod::CoreMesh (VRML 97/1.0, plain
+// or gzip; OpenFlight, finest level; PLY/OBJ/STL through vcglib) and writing a mesh as
+// PLY/OBJ/STL (vcglib) or a one-level OpenFlight file.
+#pragma once
+#include "core_mesh.h"
+#include "flt_writer.h"
+#include "lod_model.h"
+
+#include <string>
+
+namespace cadlod::cli {
+
+enum class InputFormat { Vrml, OpenFlight, Ply, Obj, Stl, Unknown };
+
+InputFormat formatOf(const std::string& path);
+const char* formatName(InputFormat format);
+
+struct ImportSettings {
+    double unitScale = 1.0;
+    bool recomputeNormals = false;
+    bool mergeVertices = true;
+    float mergeTolerance = 0.0f;
+};
+
+struct LoadedMesh {
+    InputFormat format = InputFormat::Unknown;
+    std::size_t parts = 0;
+    int mergedVertices = 0;
+    std::size_t fltLevels = 0;       // OpenFlight: levels in the file
+    flt::Units fltUnits = flt::Units::Meters;
+};
+
+// Loads `path` into `m` (empty) ready for the simplifier (compact, VF adjacency, face
+// normals, bbox); throws InputError with the reader's message (file:line:col or offset).
+LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& settings);
+
+// Reads an OpenFlight file whole; throws InputError.
+flt::LodModel readFlt(const std::string& path);
+
+struct SaveSettings {
+    flt::WriteOptions flt;
+    flt::Units units = flt::Units::Meters;
+};
+
+// Writes `m` to `path` by its extension (flt, ply, obj, stl), atomically.
+void saveMesh(const std::string& path, CoreMesh& m, const SaveSettings& settings);
+
+}  // namespace cadlod::cli

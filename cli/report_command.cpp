@@ -1,0 +1,88 @@
+// cadlod report A B: what simplification did to A (faces, symmetric Hausdorff distance in
+// % of A's diagonal, compactness before and after); both Hausdorff sides run in parallel.
+#include "cli_options.h"
+#include "commands.h"
+#include "mesh_files.h"
+#include "report_json.h"
+
+#include <tbb/parallel_invoke.h>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace cadlod::cli {
+namespace {
+
+struct ReportArgs {
+    std::string original, simplified;
+    bool json = false;
+    std::size_t samples = 0;
+    ImportArgs import;
+    int threads = 0;
+};
+
+SimplificationReport compare(CoreMesh& a, CoreMesh& b, std::size_t samples)
+{
+    SimplificationReport r;
+    r.facesBefore = a.fn;
+    r.facesAfter = b.fn;
+    r.verticesBefore = a.vn;
+    r.verticesAfter = b.vn;
+    const std::size_t n = samples ? samples : std::size_t(std::max(a.fn, b.fn));
+    std::vector<double> before, after;
+    tbb::parallel_invoke([&] { r.distance.forward = oneSidedHausdorff(a, b, n, 1); },
+                         [&] { r.distance.backward = oneSidedHausdorff(b, a, n, 2); },
+                         [&] { before = faceCompactness(a); }, [&] { after = faceCompactness(b); });
+    r.distance.diagonal = liveDiagonal(a);
+    r.histogramBefore = histogramOf(before);
+    r.histogramAfter = histogramOf(after);
+    r.before = summarizeCompactness(before);
+    r.after = summarizeCompactness(after);
+    return r;
+}
+
+void printText(const SimplificationReport& r)
+{
+    const double diag = r.distance.diagonal;
+    std::printf("faces        %d -> %d\nvertices     %d -> %d\n", r.facesBefore, r.facesAfter, r.verticesBefore,
+                r.verticesAfter);
+    std::printf("hausdorff    max %.6g (%.4f%% diag), mean %.6g (%.4f%% diag)\n", r.distance.max(),
+                diag > 0 ? 100 * r.distance.max() / diag : 0.0, r.distance.mean(),
+                diag > 0 ? 100 * r.distance.mean() / diag : 0.0);
+    std::printf("compactness  mean %.3f -> %.3f, min %.3f -> %.3f, below 0.1 %.1f%% -> %.1f%%\n", r.before.mean,
+                r.after.mean, r.before.min, r.after.min, 100 * r.before.shareBelow01, 100 * r.after.shareBelow01);
+    for (const std::string& line : histogramLines(r))
+        std::printf("%s\n", line.c_str());
+}
+
+void runReport(const ReportArgs& a)
+{
+    limitThreads(a.threads);
+    const ImportSettings importing = importSettings(a.import);
+    CoreMesh original, simplified;
+    loadMesh(a.original, original, importing);
+    loadMesh(a.simplified, simplified, importing);
+    const SimplificationReport r = compare(original, simplified, a.samples);
+    if (a.json)
+        std::cout << comparisonJson(r).dump(2) << "\n";
+    else
+        printText(r);
+}
+
+}  // namespace
+
+void addReportCommand(CLI::App& app)
+{
+    auto args = std::make_shared<ReportArgs>();
+    CLI::App* cmd = app.add_subcommand("report", "Before/after measures of a simplified mesh against its original");
+    cmd->add_option("original", args->original, "Original")->required();
+    cmd->add_option("simplified", args->simplified, "Simplified")->required();
+    cmd->add_flag("--json", args->json, "JSON on stdout");
+    cmd->add_option("--samples", args->samples, "Hausdorff samples per side (0: the larger face count)");
+    cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
+    addImportOptions(*cmd, args->import);
+    cmd->callback([args] { runReport(*args); });
+}
+
+}  // namespace cadlod::cli

@@ -1,0 +1,81 @@
+// cadlod simplify IN -o OUT: one CAD quadric edge collapse run (reduction %, face count
+// or maximum error), written as PLY/OBJ/STL or a one-level .flt.
+#include "cli_errors.h"
+#include "cli_options.h"
+#include "commands.h"
+#include "mesh_files.h"
+#include "output_file.h"
+#include "progress_bar.h"
+
+#include "core/simplify.h"
+
+#include <memory>
+
+namespace cadlod::cli {
+namespace {
+
+struct SimplifyArgs {
+    std::string input, output;
+    double reduction = 0.0;
+    int faces = 0;
+    double maxError = 0.0;
+    ImportArgs import;
+    ProtectionArgs protection;
+    ExportArgs exporting;
+    CommonArgs common;
+};
+
+SimplifyParams paramsOf(const SimplifyArgs& a)
+{
+    SimplifyParams p;
+    p.reductionPerc = a.reduction;
+    p.targetFaces = a.faces;
+    p.maxError = a.maxError;
+    if (p.reductionPerc == 0 && p.targetFaces == 0 && p.maxError == 0)
+        p.reductionPerc = 90.0;
+    applyProtection(a.protection, p);
+    return p;
+}
+
+void runSimplify(const SimplifyArgs& a)
+{
+    checkWritable(a.output, a.common.force);
+    const ImportSettings importing = importSettings(a.import);
+    const SaveSettings saving = saveSettings(a.exporting);
+    progress::enable(!a.common.quiet);
+    limitThreads(a.common.threads);
+    CoreMesh m;
+    loadMesh(a.input, m, importing);
+    const SimplifyStats stats = simplify(m, paramsOf(a), progress::callback);
+    if (!stats.ok)
+        throw InputError(a.input + ": " + stats.message);
+    saveMesh(a.output, m, saving);
+    progress::finish();
+    if (!a.common.quiet)
+        std::fprintf(stderr, "cadlod: %s: %d -> %d faces (stopped by %s), largest collapse error %.6g (%.4f%% diag)\n",
+                     a.output.c_str(), stats.facesBefore, stats.facesAfter, stats.stoppedBy.c_str(),
+                     stats.largestError, 100.0 * stats.largestErrorFraction());
+}
+
+}  // namespace
+
+void addSimplifyCommand(CLI::App& app)
+{
+    auto args = std::make_shared<SimplifyArgs>();
+    CLI::App* cmd = app.add_subcommand("simplify", "Simplify a mesh once (CAD quadric edge collapse)");
+    cmd->add_option("input", args->input, "Input file")->required();
+    cmd->add_option("-o,--output", args->output, "Output (.ply, .obj, .stl or .flt)")->required();
+    auto* reduction = cmd->add_option("--reduction", args->reduction, "Remove this % of the faces (default 90)")
+                          ->check(CLI::Range(0.0, 100.0));
+    auto* faces = cmd->add_option("--faces", args->faces, "Stop at this many faces")->check(CLI::PositiveNumber);
+    cmd->add_option("--max-error", args->maxError, "Never collapse beyond this error (fraction of the diagonal)")
+        ->check(CLI::PositiveNumber);
+    reduction->excludes(faces);
+    addImportOptions(*cmd, args->import);
+    addProtectionOptions(*cmd, args->protection);
+    addExportOptions(*cmd, args->exporting);
+    addCommonOptions(*cmd, args->common);
+    cmd->callback([args] { runSimplify(*args); });
+}
+
+}  // namespace cadlod::cli

@@ -1,0 +1,17 @@
+#include "commands.h"
+
+#include <tbb/global_control.h>
+
+#include <memory>
+
+namespace cadlod::cli {
+
+void limitThreads(int threads)
+{
+    static std::unique_ptr<tbb::global_control> control;
+    if (threads > 0)
+        control = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                        std::size_t(threads));
+}
+
+}  // namespace cadlod::cli

@@ -1,0 +1,123 @@
+// Outputs: never over an existing file without --force; a run killed while writing leaves
+// no truncated output; simplify/report/info on PLY/OBJ/STL.
+#include "cli_runner.h"
+#include "flt_reader.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace cadlod::test {
+namespace {
+
+const std::string kDemo = std::string(CADLOD_SOURCE_DIR) + "/docs/sample/cad_assembly.wrl.gz";
+
+bool readsBack(const std::string& path)
+{
+    flt::LodModel model;
+    std::string error;
+    return flt::readOpenFlightFile(path, model, error) && !model.levels.empty();
+}
+
+TEST(CliOutputs, RefusesToOverwriteWithoutForce)
+{
+    const std::string dir = freshDirectory("overwrite");
+    const std::string out = dir + "/d.flt";
+    std::ofstream(out) << "keep me";
+    const CliRun refused = runCadlod({"convert", kDemo, "-o", out, "--unit", "mm", "--lod", "90"});
+    EXPECT_EQ(refused.exitCode, 2);
+    EXPECT_NE(refused.stderrText.find("use --force"), std::string::npos) << refused.stderrText;
+    EXPECT_EQ(readFile(out), "keep me");
+    const CliRun forced = runCadlod({"convert", kDemo, "-o", out, "--unit", "mm", "--lod", "90", "--force"});
+    EXPECT_EQ(forced.exitCode, 0) << forced.stderrText;
+    EXPECT_TRUE(readsBack(out));
+    EXPECT_EQ(filesIn(dir).size(), 1u);  // no temporary file left behind
+}
+
+// Starts cadlod with stderr on a pipe (plain progress lines) and SIGKILLs it as soon as it
+// reports writing the OpenFlight file.
+void killWhileWriting(const std::vector<std::string>& args)
+{
+    int fds[2];
+    ASSERT_EQ(::pipe(fds), 0);
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        ::dup2(fds[1], STDERR_FILENO);
+        ::close(fds[0]);
+        std::vector<char*> argv{const_cast<char*>(CADLOD_CLI)};
+        for (const std::string& a : args)
+            argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        ::unsetenv("DISPLAY");
+        ::execv(CADLOD_CLI, argv.data());
+        ::_exit(127);
+    }
+    ::close(fds[1]);
+    FILE* err = ::fdopen(fds[0], "r");
+    char line[512];
+    bool writing = false;
+    while (!writing && std::fgets(line, sizeof line, err))
+        writing = std::string(line).find("Writing OpenFlight") != std::string::npos;
+    ::kill(pid, SIGKILL);
+    std::fclose(err);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    EXPECT_TRUE(writing) << "cadlod never reported writing";
+}
+
+TEST(CliOutputs, KilledRunLeavesNoTruncatedOutput)
+{
+    const std::string dir = freshDirectory("killed");
+    const std::string out = dir + "/d.flt";
+    killWhileWriting({"convert", kDemo, "-o", out, "--unit", "mm", "--lod", "50 90"});
+    // Killed before the rename: no output at all; after it: a whole file. Never a part.
+    if (fileExists(out))
+        EXPECT_TRUE(readsBack(out));
+    for (const std::string& name : filesIn(dir))
+        EXPECT_TRUE(name == "d.flt" || name.rfind(".d.flt.tmp-", 0) == 0) << name;
+
+    // Over an existing output (--force): the old file stays whole until the new one is.
+    std::ofstream(out, std::ios::trunc) << "old";
+    killWhileWriting({"convert", kDemo, "-o", out, "--unit", "mm", "--lod", "50 90", "--force"});
+    const std::string after = readFile(out);
+    EXPECT_TRUE(after == "old" || readsBack(out));
+}
+
+TEST(CliOutputs, SimplifyWritesPlyObjStlAndReportMeasuresIt)
+{
+    const std::string dir = freshDirectory("simplify");
+    for (const char* ext : {"ply", "obj", "stl", "flt"}) {
+        const std::string out = dir + "/s." + ext;
+        const CliRun run = runCadlod({"simplify", kDemo, "-o", out, "--unit", "mm", "--reduction", "80", "-q"});
+        ASSERT_EQ(run.exitCode, 0) << ext << ": " << run.stderrText;
+        const CliRun info = runCadlod({"info", out});
+        ASSERT_EQ(info.exitCode, 0) << ext << ": " << info.stderrText;
+        EXPECT_NE(info.stdoutText.find("triangles"), std::string::npos);
+    }
+    const CliRun report = runCadlod({"report", kDemo, dir + "/s.ply", "--unit", "mm", "--json", "--samples", "20000"});
+    ASSERT_EQ(report.exitCode, 0) << report.stderrText;
+    const nlohmann::json r = nlohmann::json::parse(report.stdoutText);
+    EXPECT_GT(r.at("facesBefore").get<int>(), 4 * r.at("facesAfter").get<int>());
+    EXPECT_GT(r.at("hausdorffMaxPercentDiag").get<double>(), 0.0);
+    EXPECT_LT(r.at("hausdorffMaxPercentDiag").get<double>(), 5.0);
+    EXPECT_TRUE(r.contains("compactnessAfter"));
+}
+
+TEST(CliOutputs, InfoListsTheLevelsOfAnOpenFlightFile)
+{
+    const std::string dir = freshDirectory("info");
+    ASSERT_EQ(runCadlod({"convert", kDemo, "-o", dir + "/d.flt", "--unit", "mm", "--lod", "50 90", "-q"}).exitCode, 0);
+    const CliRun info = runCadlod({"info", dir + "/d.flt"});
+    ASSERT_EQ(info.exitCode, 0) << info.stderrText;
+    EXPECT_NE(info.stdoutText.find("LOD levels   3"), std::string::npos) << info.stdoutText;
+    EXPECT_NE(info.stdoutText.find("parts        8"), std::string::npos) << info.stdoutText;
+}
+
+}  // namespace
+}  // namespace cadlod::test

@@ -1,0 +1,109 @@
+// cadlod convert end to end: the demo assembly (mm) and a VRML 1.0 file to .flt, read back
+// with OpenSceneGraph: one LOD node per level, contiguous ranges from 0, finest first.
+#include "cli_runner.h"
+#include "osg_probe.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace cadlod::test {
+namespace {
+
+const std::string kDemo = std::string(CADLOD_SOURCE_DIR) + "/docs/sample/cad_assembly.wrl.gz";
+const std::string kVrml1 = std::string(CADLOD_CORPUS_DIR) + "/castle-demo-models/vrml_1/kings_head.wrl";
+
+// Levels read back by OSG: contiguous switch ranges starting at 0, finer levels closer,
+// and as many LOD children as the report lists levels.
+void expectChain(const OsgProbe& probe, std::size_t levels)
+{
+    ASSERT_TRUE(probe.loaded);
+    ASSERT_EQ(probe.lods.size(), levels);
+    EXPECT_FLOAT_EQ(probe.lods.front().minRange, 0.0f);
+    for (std::size_t k = 0; k + 1 < probe.lods.size(); ++k) {
+        EXPECT_FLOAT_EQ(probe.lods[k].maxRange, probe.lods[k + 1].minRange) << "level " << k;
+        EXPECT_LT(probe.lods[k].minRange, probe.lods[k].maxRange) << "level " << k;
+        EXPECT_GT(probe.lods[k].triangles.size(), probe.lods[k + 1].triangles.size()) << "level " << k;
+    }
+}
+
+TEST(CliConvert, DemoAssemblyInMillimetresGivesAnOsgReadableChain)
+{
+    const std::string dir = freshDirectory("demo");
+    const CliRun run = runCadlod({"convert", kDemo, "-o", dir + "/demo.flt", "--unit", "mm", "--report",
+                                  dir + "/report.json"});
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/report.json"));
+    const auto& levels = report.at("levels");
+    ASSERT_GE(levels.size(), 4u);
+    expectChain(probeWithOsg(dir + "/demo.flt", "noUnitsConversion"), levels.size());
+    // mm scaled to metres: the assembly is a few tenths of a metre across.
+    EXPECT_GT(report.at("modelSize").get<double>(), 0.1);
+    EXPECT_LT(report.at("modelSize").get<double>(), 1.0);
+}
+
+TEST(CliConvert, Vrml1FileConverts)
+{
+    const std::string dir = freshDirectory("vrml1");
+    const CliRun run = runCadlod({"convert", kVrml1, "-o", dir + "/head.flt", "--report", dir + "/r.json"});
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/r.json"));
+    EXPECT_EQ(report.at("input").at("format"), "VRML");
+    expectChain(probeWithOsg(dir + "/head.flt", "noUnitsConversion"), report.at("levels").size());
+}
+
+TEST(CliConvert, PercentageListBuildsThePapersLevels)
+{
+    const std::string dir = freshDirectory("list");
+    const CliRun run = runCadlod({"convert", kDemo, "-o", dir + "/list.flt", "--unit", "mm", "--lod", "50 90",
+                                  "--report", dir + "/r.json"});
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/r.json"));
+    const auto& levels = report.at("levels");
+    ASSERT_EQ(levels.size(), 3u);
+    EXPECT_NEAR(levels[1].at("reductionPercent").get<double>(), 50.0, 1.0);
+    EXPECT_NEAR(levels[2].at("reductionPercent").get<double>(), 90.0, 1.0);
+    expectChain(probeWithOsg(dir + "/list.flt", "noUnitsConversion"), 3);
+}
+
+TEST(CliConvert, ReportHasInputOptionsLevelsAndTimings)
+{
+    const std::string dir = freshDirectory("report");
+    const CliRun run = runCadlod({"convert", kDemo, "-o", dir + "/d.flt", "--unit", "mm", "--pixel-error", "2",
+                                  "--report", dir + "/r.json"});
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const nlohmann::json r = nlohmann::json::parse(readFile(dir + "/r.json"));
+    EXPECT_EQ(r.at("input").at("path"), kDemo);
+    EXPECT_EQ(r.at("input").at("parts").get<int>(), 8);
+    EXPECT_EQ(r.at("options").at("pixelError").get<double>(), 2.0);
+    EXPECT_EQ(r.at("options").at("import").at("unitScale").get<double>(), 0.001);
+    for (const char* t : {"importSeconds", "lodSeconds", "writeSeconds", "totalSeconds"})
+        EXPECT_TRUE(r.at("timings").contains(t)) << t;
+    const auto& levels = r.at("levels");
+    for (std::size_t k = 1; k < levels.size(); ++k) {
+        const auto& l = levels[k];
+        for (const char* f : {"faces", "hausdorffMax", "hausdorffMaxPercentDiag", "errorPixelsAtSwitchOut",
+                              "switchOut", "switchIn", "compactness", "simplification"})
+            EXPECT_TRUE(l.contains(f)) << "level " << k << " " << f;
+        EXPECT_LT(l.at("faces").get<int>(), levels[k - 1].at("faces").get<int>());
+        // Switched in where its error projects to at most the pixel error.
+        EXPECT_LE(l.at("errorPixelsAtSwitchOut").get<double>(), 2.0 * 1.001) << "level " << k;
+        EXPECT_TRUE(l.at("simplification").contains("relaxed"));
+    }
+    EXPECT_EQ(levels.back().at("switchIn"), "never");
+}
+
+TEST(CliConvert, OneAndTwoThreadsWriteTheSameBytes)
+{
+    // Same file name (the model is named after it), one directory per thread count.
+    const std::string one = freshDirectory("threads_1") + "/out.flt", two = freshDirectory("threads_2") + "/out.flt";
+    for (const auto& [n, out] : {std::pair{"1", one}, std::pair{"2", two}}) {
+        const CliRun run = runCadlod({"convert", kDemo, "-o", out, "--unit", "mm", "--threads", n});
+        ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    }
+    const std::string bytes1 = readFile(one), bytes2 = readFile(two);
+    ASSERT_GT(bytes1.size(), 1000u);
+    EXPECT_TRUE(bytes1 == bytes2);
+}
+
+}  // namespace
+}  // namespace cadlod::test
