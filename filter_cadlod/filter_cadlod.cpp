@@ -40,13 +40,11 @@ QString FilterCadLodPlugin::filterInfo(FilterIDType filter) const
                "The quality mapper or the face quality histogram show the same values. "
                "The log reports mean, min, 5th percentile and the share of faces below 0.1 and 0.3.";
     case FP_CAD_SIMPLIFY:
-        return "Quadric edge collapse for CAD tessellations (Tang et al. 2015): for each edge the "
-               "ends, points along it and the quadric optimum are tried; placements of nearly equal "
-               "quadric cost are tied and the one giving the most compact triangles wins. Creases "
-               "(feature angle), boundaries and CAD part borders keep their vertices, faces never "
-               "fold, and a minimum compactness is enforced. Stops at a face count, a reduction "
-               "percentage or a maximum error (fraction of the bbox diagonal), whichever comes first. "
-               "The log reports faces, time, compactness before/after and the largest collapse error.";
+        return "Quadric edge collapse for CAD tessellations (Tang et al. 2015): among placements of "
+               "nearly equal cost the one giving the most compact triangles wins. Creases, corners, "
+               "boundaries and part or colour borders give way only where every other collapse costs "
+               "far more; faces never fold. Stops at the reduction % (or face count) unless the max "
+               "error forbids it. The log says what stopped it and what gave way.";
     case FP_REPORT:
         return "Compares the current layer with the one it was simplified from: face and vertex "
                "counts, the symmetric Hausdorff distance (max, mean, RMS; absolute and in % of the "

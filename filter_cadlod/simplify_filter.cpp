@@ -47,8 +47,7 @@ void cadSimplifyParameters(MeshModel& m, RichParameterList& par)
     par.addParam(RichFloat("reductionPerc", 50, "Reduction (%)",
                            "Stop after removing this % of the faces (90 keeps 10 %); wins over the face count."));
     par.addParam(RichFloat("maxError", 0, "Max error (fraction of bbox diagonal)",
-                           "If non-zero, no collapse moves the surface further than this (RMS distance to the "
-                           "original planes it replaces), e.g. 0.0001 = 0.01 % of the diagonal."));
+                           "No collapse moves the surface further than this, e.g. 0.0001 (0: off)."));
     addPlacementParameters(par);
     par.addParam(RichBool("selectedOnly", m.cm.sfn > 0, "Selected faces only",
                           "Only collapse vertices whose faces are all selected."));

@@ -6,53 +6,44 @@ void addFeatureParameters(RichParameterList& par)
 {
     const SimplifyParams d;
     par.addParam(RichFloat("featureAngle", d.featureAngle, "Feature angle (degrees)",
-                           "Edges whose faces meet at a sharper angle are creases: they stay sharp, and their "
-                           "vertices only move along them."));
+                           "Sharper edges are creases: their vertices only move along them."));
     par.addParam(RichBool("preserveBoundary", d.preserveBoundary, "Preserve boundary",
-                          "Boundary edges are features: boundary vertices stay on the boundary polyline."));
+                          "Boundary edges are features: boundary vertices stay on the boundary."));
     par.addParam(RichBool("keepPartBorders", d.keepPartBorders, "Keep part borders",
-                          "Edges between faces of different CAD parts (cadlod_part attribute) are features."));
+                          "Edges between CAD parts (cadlod_part attribute) are features."));
     par.addParam(RichBool("keepColorBorders", d.keepColorBorders, "Keep colour borders",
-                          "Edges between faces of different colours (materials) are features; ignored when "
-                          "the faces have more than 256 colours (a painted measure)."));
+                          "Edges between face colours are features (ignored above 256 colours)."));
     par.addParam(RichFloat("featurePenalty", d.featurePenalty, "Feature penalty",
-                           "A collapse that breaks a feature (crease, corner, boundary, border) runs only when "
-                           "it costs this many times less than the alternatives. 0: features never give way."));
+                           "A feature gives way only where that costs this many times less (0: never)."));
 }
 
 void addPlacementParameters(RichParameterList& par)
 {
     const SimplifyParams d;
     par.addParam(RichFloat("tieTolerance", d.tieTolerance, "Tie tolerance (relative)",
-                           "Placements whose quadric cost is within this fraction of the cheapest are tied; the "
-                           "tied placement with the most compact triangles wins."));
+                           "Placements within this fraction of the cheapest cost are tied; compactness decides."));
     par.addParam(RichFloat("flatTolerance", d.flatTolerance, "Flat tolerance (fraction of diagonal)",
-                           "Absolute tie floor for flat regions, as an RMS distance relative to the diagonal."));
+                           "Tie floor for flat regions: an RMS distance as a fraction of the diagonal."));
     par.addParam(RichInt("candidatesPerEdge", d.candidatesPerEdge, "Candidates per edge",
-                         "Evenly spaced points tried along each edge, besides its ends and the quadric optimum."));
+                         "Points tried along each edge, besides its ends and the quadric optimum."));
     par.addParam(RichBool("optimalPlacement", d.optimalPlacement, "Optimal placement",
                           "Also try the quadric optimum (when well conditioned and near the edge)."));
     par.addParam(RichFloat("boundaryWeight", d.boundaryWeight, "Boundary/crease weight",
-                           "Weight of the constraint quadrics of boundary edges, creases and part borders."));
+                           "Weight of the constraint quadrics of boundaries, creases and borders."));
     par.addParam(RichBool("preserveTopology", d.preserveTopology, "Preserve topology",
-                          "Refuse collapses that would change the genus or make the mesh non-manifold."));
+                          "Refuse collapses that change the genus or make the mesh non-manifold."));
     par.addParam(RichBool("normalCheck", d.normalCheck, "Normal check",
-                          "Refuse collapses that turn a face by more than the normal threshold or against its "
-                          "input orientation."));
+                          "Refuse collapses that turn a face too far or against its input side."));
     par.addParam(RichFloat("normalThreshold", d.normalThreshold, "Normal threshold (degrees)",
-                           "Largest rotation of a face normal in one collapse."));
+                           "Largest turn of a face normal in one collapse."));
     par.addParam(RichFloat("minCompactness", d.minCompactness, "Minimum compactness",
-                           "Never create a triangle less compact than this, unless the neighbourhood was already "
-                           "worse. Collapses that cost no error (flat regions, straight lines) must not create one "
-                           "below 0.1 either. 0: no shape guard."));
+                           "No new triangle less compact than this unless it was worse already (0: off)."));
     par.addParam(RichFloat("qualityThreshold", d.qualityThreshold, "Quality threshold",
-                           "Collapses that cost (almost) no error, in flat regions and along straight lines, wait longer "
-                           "when their new triangles have a mean compactness below this. 0: ordered by area only."));
+                           "Free collapses making triangles less compact than this wait longer."));
     par.addParam(RichBool("planarQuadric", d.planarQuadric, "Planar quadrics",
                           "Tiny extra quadrics on every edge: steadier flat regions."));
     par.addParam(RichBool("relaxToReachTarget", d.relaxToReachTarget, "Reach the target",
-                          "When the face target is blocked: allow less compact triangles, and remove the "
-                          "smallest separate parts whole when cheaper; each step is logged."));
+                          "When blocked: allow less compact triangles, then drop small parts (logged)."));
     addFeatureParameters(par);
 }
 
