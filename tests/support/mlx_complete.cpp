@@ -10,7 +10,8 @@
 #include <common/interfaces.h>
 #include <common/pluginmanager.h>
 
-#include <vcg/complex/algorithms/create/platonic.h>
+#include "plugin_host.h"
+
 
 #include <QApplication>
 #include <QDomDocument>
@@ -106,13 +107,9 @@ int main(int argc, char** argv)
     if (!readXml(argv[2], in, error))
         return fail(error);
 
-    PluginManager pm;
-    RichParameterList globals;
-    pm.loadPlugins(globals, QDir(argv[1]));
-    MeshDocument md;
-    MeshModel* dummy = md.addNewMesh("", "dummy", true);
-    vcg::tri::Tetrahedron<CMeshO>(dummy->cm);
-    dummy->updateDataMask(MeshModel::MM_ALL);
+    cadlod::test::PluginHost host(argv[1]);
+    PluginManager& pm = host.plugins;
+    MeshDocument& md = host.document;
 
     QDomDocument out("FilterScript");
     QDomElement root = out.createElement("FilterScript");

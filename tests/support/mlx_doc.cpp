@@ -8,7 +8,8 @@
 #include <common/interfaces.h>
 #include <common/pluginmanager.h>
 
-#include <vcg/complex/algorithms/create/platonic.h>
+#include "plugin_host.h"
+
 
 #include <QApplication>
 #include <QDomDocument>
@@ -55,13 +56,9 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "usage: cadlod_mlx_doc PLUGIN_DIR OUT.md\n");
         return 2;
     }
-    PluginManager pm;
-    RichParameterList globals;
-    pm.loadPlugins(globals, QDir(argv[1]));
-    MeshDocument md;
-    MeshModel* dummy = md.addNewMesh("", "dummy", true);
-    vcg::tri::Tetrahedron<CMeshO>(dummy->cm);
-    dummy->updateDataMask(MeshModel::MM_ALL);
+    cadlod::test::PluginHost host(argv[1]);
+    PluginManager& pm = host.plugins;
+    MeshDocument& md = host.document;
 
     QString text;
     QTextStream out(&text);
