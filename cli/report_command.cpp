@@ -22,26 +22,6 @@ struct ReportArgs {
     int threads = 0;
 };
 
-SimplificationReport compare(CoreMesh& a, CoreMesh& b, std::size_t samples)
-{
-    SimplificationReport r;
-    r.facesBefore = a.fn;
-    r.facesAfter = b.fn;
-    r.verticesBefore = a.vn;
-    r.verticesAfter = b.vn;
-    const std::size_t n = samples ? samples : std::size_t(std::max(a.fn, b.fn));
-    std::vector<double> before, after;
-    tbb::parallel_invoke([&] { r.distance.forward = oneSidedHausdorff(a, b, n, 1); },
-                         [&] { r.distance.backward = oneSidedHausdorff(b, a, n, 2); },
-                         [&] { before = faceCompactness(a); }, [&] { after = faceCompactness(b); });
-    r.distance.diagonal = liveDiagonal(a);
-    r.histogramBefore = histogramOf(before);
-    r.histogramAfter = histogramOf(after);
-    r.before = summarizeCompactness(before);
-    r.after = summarizeCompactness(after);
-    return r;
-}
-
 void printText(const SimplificationReport& r)
 {
     const double diag = r.distance.diagonal;
@@ -63,7 +43,8 @@ void runReport(const ReportArgs& a)
     CoreMesh original, simplified;
     loadMesh(a.original, original, importing);
     loadMesh(a.simplified, simplified, importing);
-    const SimplificationReport r = compare(original, simplified, a.samples);
+    const SimplificationReport r = compareWithOriginal(original, simplified, a.samples, nullptr,
+                                                         [](auto&&... tasks) { tbb::parallel_invoke(tasks...); });
     if (a.json)
         std::cout << comparisonJson(r).dump(2) << "\n";
     else

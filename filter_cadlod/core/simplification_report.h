@@ -31,11 +31,22 @@ struct SimplificationReport {
     CompactnessHistogram histogramBefore{}, histogramAfter{};
 };
 
+// Runs independent tasks one after the other; compareWithOriginal's default.
+struct InSequence {
+    template <class... Task>
+    void operator()(Task&&... tasks) const
+    {
+        (tasks(), ...);
+    }
+};
+
 // `faceSamples` per direction (0: as many as the larger face count). `vertexDistance`, when
-// given, receives each vertex of `simplified`'s distance to `original`.
-template <class MeshType>
+// given, receives each vertex of `simplified`'s distance to `original`. `invoke` runs the four
+// independent measures (both Hausdorff directions, both compactness lists); a caller with a
+// thread pool passes e.g. tbb::parallel_invoke.
+template <class MeshType, class Invoke = InSequence>
 SimplificationReport compareWithOriginal(MeshType& original, MeshType& simplified, std::size_t faceSamples,
-                                         std::vector<double>* vertexDistance = nullptr)
+                                         std::vector<double>* vertexDistance = nullptr, Invoke invoke = {})
 {
     SimplificationReport r;
     r.facesBefore = original.fn;
@@ -43,10 +54,11 @@ SimplificationReport compareWithOriginal(MeshType& original, MeshType& simplifie
     r.verticesBefore = original.vn;
     r.verticesAfter = simplified.vn;
     const std::size_t samples = faceSamples ? faceSamples : std::size_t(std::max(original.fn, simplified.fn));
-    r.distance.forward = oneSidedHausdorff(original, simplified, samples, 1);
-    r.distance.backward = oneSidedHausdorff(simplified, original, samples, 2, vertexDistance);
+    std::vector<double> before, after;
+    invoke([&] { r.distance.forward = oneSidedHausdorff(original, simplified, samples, 1); },
+           [&] { r.distance.backward = oneSidedHausdorff(simplified, original, samples, 2, vertexDistance); },
+           [&] { before = faceCompactness(original); }, [&] { after = faceCompactness(simplified); });
     r.distance.diagonal = liveDiagonal(original);
-    std::vector<double> before = faceCompactness(original), after = faceCompactness(simplified);
     r.histogramBefore = histogramOf(before);
     r.histogramAfter = histogramOf(after);
     r.before = summarizeCompactness(before);
