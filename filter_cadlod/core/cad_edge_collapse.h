@@ -29,8 +29,9 @@
 // vcglib pitfalls handled here: the base constructor would call the base ComputePriority,
 // so this class sets its own fields; ComputePosition is not virtual in vcglib, so the
 // position is computed and stored by ComputePriority; all per-run state lives in the
-// CollapseContext passed as the BaseParameterClass, not in statics (vcglib's GlobalMark
-// is still static: one simplification at a time per process).
+// CollapseContext passed as the BaseParameterClass, not in statics: the context's `mark`
+// replaces vcglib's static GlobalMark(), and IsUpToDate is this class's own (vcglib's
+// counts failures in a static), so sessions on different meshes may run at the same time.
 #pragma once
 
 #include "cad_quadrics.h"
@@ -71,6 +72,7 @@ struct CollapseContext : public vcg::BaseParameterClass {
 
     SimplifyParams params;
     FeatureBits bits;
+    bool ownsBits = true;         // bits taken by this session (not shared with others)
     VertexQuadrics<VertexType> quadrics;
     SimplifyStats* stats = nullptr;
     double diagonal = 1.0;
@@ -82,7 +84,9 @@ struct CollapseContext : public vcg::BaseParameterClass {
     bool shapeGuards = true;      // minCompactness and the free-sliver guard apply (relaxed last)
     typename vcg::LocalOptimization<MeshType>::HeapType* heap = nullptr;  // for re-queued entries
     std::vector<RingFace> ring;   // scratch of the edge being evaluated
-    std::vector<int> ringChangedAt;  // per vertex: GlobalMark when a face around it last changed
+    int mark = 0;                 // this session's clock: ticks at every collapse (vcglib's GlobalMark)
+    bool mayRemoveLargestComponent = false;  // the mesh is a piece of a model whose largest component is elsewhere
+    std::vector<int> ringChangedAt;  // per vertex: `mark` when a face around it last changed
     int& ringChanged(const VertexType* v) { return ringChangedAt[v - vertexBase]; }
     const VertexType* vertexBase = nullptr;
     std::vector<vcg::Point3f> inputNormal;  // per face index: unit normal in the input
@@ -175,6 +179,14 @@ public:
         return this->_priority;
     }
 
+    // Out of date when a vertex was deleted or changed after this entry was made.
+    bool IsUpToDate() const override
+    {
+        const VertexType* v0 = this->pos.cV(0);
+        const VertexType* v1 = this->pos.cV(1);
+        return !v0->IsD() && !v1->IsD() && this->localMark >= v0->cIMark() && this->localMark >= v1->cIMark();
+    }
+
     bool IsFeasible(vcg::BaseParameterClass* pp) override
     {
         Context& ctx = *static_cast<Context*>(pp);
@@ -234,7 +246,7 @@ public:
     void UpdateHeap(HeapType& heap, vcg::BaseParameterClass* pp) override
     {
         Context& ctx = *static_cast<Context*>(pp);
-        const int mark = ++this->GlobalMark();
+        const int mark = ++ctx.mark;
         VertexType* v1 = this->pos.V(1);
         v1->IMark() = mark;
         ctx.ringChanged(v1) = mark;
@@ -275,7 +287,7 @@ public:
                 for (VertexType* w : {x.V1(), x.V2()}) {
                     if (&v < w && w->IsRW() && !w->IsV()) {
                         w->SetV();
-                        heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(&v, w), Base::GlobalMark(), pp)));
+                        heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(&v, w), static_cast<Context*>(pp)->mark, pp)));
                     }
                 }
             }
@@ -304,7 +316,7 @@ private:
 
     static void push(HeapType& heap, VertexType* a, VertexType* b, vcg::BaseParameterClass* pp)
     {
-        heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(a, b), Base::GlobalMark(), pp)));
+        heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(a, b), static_cast<Context*>(pp)->mark, pp)));
         std::push_heap(heap.begin(), heap.end());
     }
 
@@ -512,7 +524,7 @@ private:
     void evaluate(Context& ctx)
     {
         evaluated_ = true;
-        evaluatedAt_ = this->GlobalMark();
+        evaluatedAt_ = ctx.mark;
         feasible_ = true;
         breaksFeature_ = false;
         VertexType* v0 = this->pos.V(0);
@@ -602,7 +614,7 @@ private:
     bool feasible_ = true;
     bool breaksFeature_ = false;
     bool evaluated_ = false;
-    int evaluatedAt_ = 0;  // GlobalMark when evaluated
+    int evaluatedAt_ = 0;  // ctx.mark when evaluated
 };
 
 }  // namespace cadlod

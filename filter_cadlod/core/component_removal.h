@@ -18,7 +18,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace cadlod {
@@ -34,13 +33,16 @@ public:
     using HeapElem = typename vcg::LocalOptimization<MeshType>::HeapElem;
     using Context = CollapseContext<MeshType>;
 
-    // Adds one removal per component but the largest to `heap` (not re-heapified).
+    // Adds one removal per component but the largest (unless the context says the model's
+    // largest is in another mesh) to `heap` (not re-heapified).
     static void push(MeshType& m, Context& ctx, HeapType& heap)
     {
         const std::vector<Component<MeshType>> components = connectedComponents(m);
         const std::vector<bool> touching = touchingOthers(m, components);
         const double penalty = std::max(1.0, ctx.params.featurePenalty);
-        for (std::size_t i = 0; i + 1 < components.size(); ++i) {
+        const std::size_t removable =
+            ctx.mayRemoveLargestComponent || components.empty() ? components.size() : components.size() - 1;
+        for (std::size_t i = 0; i < removable; ++i) {
             const Component<MeshType>& c = components[i];
             if (ctx.maxErrorAbs > 0 && c.size() > ctx.maxErrorAbs)
                 break;
@@ -91,35 +93,13 @@ private:
     // component stands.
     static std::vector<bool> touchingOthers(MeshType& m, const std::vector<Component<MeshType>>& components)
     {
-        struct Key {
-            float x, y, z;
-            bool operator==(const Key& k) const { return x == k.x && y == k.y && z == k.z; }
-        };
-        struct Hash {
-            std::size_t operator()(const Key& k) const
-            {
-                std::size_t h = std::hash<float>()(k.x);
-                h = h * 1000003u ^ std::hash<float>()(k.y);
-                return h * 1000003u ^ std::hash<float>()(k.z);
-            }
-        };
-        std::vector<bool> touching(components.size(), false);
-        std::vector<int> componentOf(m.vert.size(), -1);
-        std::unordered_map<Key, int, Hash> owner;
+        const std::vector<int> group = touchGroups(m, components);
+        std::vector<int> members(components.size(), 0);
+        for (int g : group)
+            ++members[std::size_t(g)];
+        std::vector<bool> touching(components.size());
         for (std::size_t c = 0; c < components.size(); ++c)
-            for (auto* f : components[c].faces)
-                for (int j = 0; j < 3; ++j) {
-                    const std::size_t v = std::size_t(f->V(j) - &m.vert[0]);
-                    if (componentOf[v] >= 0)
-                        continue;
-                    componentOf[v] = int(c);
-                    const auto& p = f->V(j)->cP();
-                    const auto [it, added] = owner.emplace(Key{float(p[0]), float(p[1]), float(p[2])}, int(c));
-                    if (!added && it->second != int(c)) {
-                        touching[c] = true;
-                        touching[std::size_t(it->second)] = true;
-                    }
-                }
+            touching[c] = members[std::size_t(group[c])] > 1;
         return touching;
     }
 

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace cadlod {
@@ -75,6 +76,58 @@ std::vector<Component<MeshType>> connectedComponents(MeshType& m)
     }
     std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.size() < b.size(); });
     return out;
+}
+
+// Groups of components that touch: a vertex of one stands exactly where a vertex of
+// another stands (a surface exported unwelded, faces split at a seam). Per component, the
+// index of its group, numbered in order of first member.
+template <class MeshType>
+std::vector<int> touchGroups(MeshType& m, const std::vector<Component<MeshType>>& components)
+{
+    struct Key {
+        float x, y, z;
+        bool operator==(const Key& k) const { return x == k.x && y == k.y && z == k.z; }
+    };
+    struct Hash {
+        std::size_t operator()(const Key& k) const
+        {
+            std::size_t h = std::hash<float>()(k.x);
+            h = h * 1000003u ^ std::hash<float>()(k.y);
+            return h * 1000003u ^ std::hash<float>()(k.z);
+        }
+    };
+    std::vector<std::size_t> parent(components.size());
+    for (std::size_t c = 0; c < parent.size(); ++c)
+        parent[c] = c;
+    auto root = [&](std::size_t c) {
+        while (parent[c] != c)
+            c = parent[c] = parent[parent[c]];
+        return c;
+    };
+    std::vector<char> seen(m.vert.size(), 0);
+    std::unordered_map<Key, std::size_t, Hash> owner;
+    for (std::size_t c = 0; c < components.size(); ++c)
+        for (auto* f : components[c].faces)
+            for (int j = 0; j < 3; ++j) {
+                char& s = seen[std::size_t(f->V(j) - &m.vert[0])];
+                if (s)
+                    continue;
+                s = 1;
+                const auto& p = f->V(j)->cP();
+                const auto [it, added] = owner.emplace(Key{float(p[0]), float(p[1]), float(p[2])}, c);
+                if (!added)
+                    parent[root(c)] = root(it->second);
+            }
+    std::vector<int> group(components.size(), -1);
+    std::vector<int> numberOfRoot(components.size(), -1);
+    int groups = 0;
+    for (std::size_t c = 0; c < components.size(); ++c) {
+        int& n = numberOfRoot[root(c)];
+        if (n < 0)
+            n = groups++;
+        group[c] = n;
+    }
+    return group;
 }
 
 // Deletes the component's faces and the vertices they use (no other live face uses them).

@@ -58,6 +58,20 @@ double usedDiagonal(MeshType& m, int lockedBit)
     return box.IsNull() ? 0.0 : box.Diag();
 }
 
+// The same diagonal, leaving the mesh as it is.
+template <class MeshType>
+double finiteFaceDiagonal(const MeshType& m)
+{
+    vcg::Box3d box;
+    for (const auto& f : m.face)
+        for (int j = 0; j < 3 && !f.IsD(); ++j) {
+            const auto& p = f.cP(j);
+            if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
+                box.Add(vcg::Point3d::Construct(p));
+        }
+    return box.IsNull() ? 0.0 : box.Diag();
+}
+
 // vcglib's way to restrict a collapse to a selection: vertices not surrounded by selected
 // faces are made read-only. Returns them, to make them writable again afterwards.
 template <class MeshType>
@@ -118,26 +132,54 @@ bool simplifierRequirementsMet(const MeshType& m)
            vcg::tri::HasPerVertexMark(m);
 }
 
-// Sets up a simplification of `m`: feature and boundary marks, quadrics, input normals,
-// the bit flags they need. False if the mesh has no extent (stats.diagonal 0). Every
-// prepareCollapse needs a releaseCollapse, which frees the bit flags.
+// The bit flags a simplification needs, taken from vcglib's per-type pool (a process-wide
+// stack: take and give back in order, from one thread). Sessions on different meshes may
+// share one set.
 template <class MeshType>
-bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<MeshType>& ctx, SimplifyStats& stats)
+FeatureBits takeFeatureBits()
+{
+    FeatureBits bits;
+    for (int j = 0; j < 3; ++j)
+        bits.edge[j] = MeshType::FaceType::NewBitFlag();
+    bits.locked = MeshType::VertexType::NewBitFlag();
+    bits.boundary = MeshType::VertexType::NewBitFlag();
+    return bits;
+}
+
+template <class MeshType>
+void giveBackFeatureBits(const FeatureBits& bits)
+{
+    MeshType::VertexType::DeleteBitFlag(bits.boundary);
+    MeshType::VertexType::DeleteBitFlag(bits.locked);
+    for (int j = 2; j >= 0; --j)
+        MeshType::FaceType::DeleteBitFlag(bits.edge[j]);
+}
+
+// Sets up a simplification of `m`: feature and boundary marks, quadrics, input normals,
+// the bit flags they need (`sharedBits`, or a set of its own). False if the mesh has no
+// extent (stats.diagonal 0). `modelDiagonal` > 0: `m` is a piece of a model that size,
+// whose priorities and logged sizes it must share. Every prepareCollapse needs a
+// releaseCollapse, which gives back bit flags of its own.
+template <class MeshType>
+bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<MeshType>& ctx, SimplifyStats& stats,
+                     const FeatureBits* sharedBits = nullptr, double modelDiagonal = 0.0)
 {
     using FaceType = typename MeshType::FaceType;
     using VertexType = typename MeshType::VertexType;
     ctx.params = params;
     ctx.stats = &stats;
-    for (int j = 0; j < 3; ++j)
-        ctx.bits.edge[j] = FaceType::NewBitFlag();
-    ctx.bits.locked = VertexType::NewBitFlag();
-    ctx.bits.boundary = VertexType::NewBitFlag();
+    ctx.ownsBits = sharedBits == nullptr;
+    ctx.bits = sharedBits ? *sharedBits : takeFeatureBits<MeshType>();
+    ctx.mark = 0;
     for (VertexType& v : m.vert) {
         v.ClearUserBit(ctx.bits.locked);
         v.ClearUserBit(ctx.bits.boundary);
+        ctx.mark = std::max(ctx.mark, v.cIMark());  // marks of an earlier session on `m` stay in the past
     }
 
     stats.diagonal = detail::usedDiagonal(m, ctx.bits.locked);
+    if (modelDiagonal > 0)
+        stats.diagonal = modelDiagonal;
     if (!(stats.diagonal > 0))
         return false;
     ctx.diagonal = stats.diagonal;
@@ -189,10 +231,8 @@ void releaseCollapse(MeshType& m, CollapseContext<MeshType>& ctx)
         v.ClearUserBit(ctx.bits.locked);
         v.ClearUserBit(ctx.bits.boundary);
     }
-    VertexType::DeleteBitFlag(ctx.bits.boundary);
-    VertexType::DeleteBitFlag(ctx.bits.locked);
-    for (int j = 2; j >= 0; --j)
-        FaceType::DeleteBitFlag(ctx.bits.edge[j]);
+    if (ctx.ownsBits)
+        giveBackFeatureBits<MeshType>(ctx.bits);
 }
 
 namespace detail {
