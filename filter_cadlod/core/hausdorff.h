@@ -5,11 +5,13 @@
 // normals, marks or adjacency; deleted elements are ignored.
 #pragma once
 
+#include "run_together.h"
 #include "triangle_tree.h"
 
 #include <vcg/complex/complex.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -17,6 +19,9 @@
 #include <vector>
 
 namespace cadlod {
+
+// Chunks a one-sided distance is measured in when it may run on several cores.
+inline constexpr std::size_t kHausdorffChunks = 16;
 
 struct HausdorffStats {
     double max = 0.0;   // model units
@@ -145,43 +150,51 @@ private:
     double maxDist_ = 1.0;
 };
 
-}  // namespace detail
-
-// Distances from `faceSamples` area-uniform points on `from` (plus its vertices) to `to`.
-// `vertexDistances`, when given, receives the distance of every vertex of `from` (indexed
-// like from.vert; deleted vertices get 0).
-// `closest` is an index of `to` (detail::ClosestFace), built once when many meshes are
-// measured against the same one.
-template <class MeshFrom, class MeshTo>
-HausdorffStats oneSidedHausdorff(MeshFrom& from, detail::ClosestFace<MeshTo>& closest, std::size_t faceSamples,
-                                 unsigned seed = 1, std::vector<double>* vertexDistances = nullptr)
-{
-    HausdorffStats s;
-    const auto sources = detail::liveFaces(from);
-    if (closest.empty() || sources.empty())
-        return s;
-
-    double sum = 0.0, sumSquares = 0.0;
-    std::int64_t hint = -1;
-    auto measure = [&](const vcg::Point3d& p) {
-        double d = 0;
-        closest.find(p, d, hint);
-        s.max = std::max(s.max, d);
+// Running max, sum and sum of squares of distances.
+struct DistanceSums {
+    double max = 0.0, sum = 0.0, sumSquares = 0.0;
+    std::size_t count = 0;
+    void add(double d)
+    {
+        max = std::max(max, d);
         sum += d;
         sumSquares += d * d;
-        ++s.samples;
-        return d;
-    };
+        ++count;
+    }
+    void add(const DistanceSums& o)
+    {
+        max = std::max(max, o.max);
+        sum += o.sum;
+        sumSquares += o.sumSquares;
+        count += o.count;
+    }
+};
 
-    if (vertexDistances)
-        vertexDistances->assign(from.vert.size(), 0.0);
+}  // namespace detail
+
+// The points a one-sided Hausdorff distance measures on a mesh: every live vertex (first,
+// their indices in `vertexIndex`), then area-uniform random points, face by face
+// (neighbouring lookups in a row are fast).
+struct HausdorffSamples {
+    std::vector<vcg::Point3d> points;
+    std::vector<std::size_t> vertexIndex;  // mesh.vert index of points[i], i < vertexIndex.size()
+    std::size_t vertexCount = 0;           // mesh.vert.size()
+};
+
+template <class MeshFrom>
+HausdorffSamples hausdorffSamples(MeshFrom& from, std::size_t faceSamples, unsigned seed)
+{
+    HausdorffSamples result;
+    std::vector<vcg::Point3d>& points = result.points;
+    result.vertexCount = from.vert.size();
+    const auto sources = detail::liveFaces(from);
+    if (sources.empty())
+        return result;
     for (std::size_t i = 0; i < from.vert.size(); ++i)
         if (!from.vert[i].IsD()) {
-            const double d = measure(vcg::Point3d::Construct(from.vert[i].cP()));
-            if (vertexDistances)
-                (*vertexDistances)[i] = d;
+            result.vertexIndex.push_back(i);
+            points.push_back(vcg::Point3d::Construct(from.vert[i].cP()));
         }
-
     std::vector<double> cumulativeArea;
     cumulativeArea.reserve(sources.size());
     double total = 0.0;
@@ -190,7 +203,6 @@ HausdorffStats oneSidedHausdorff(MeshFrom& from, detail::ClosestFace<MeshTo>& cl
         total += 0.5 * ((vcg::Point3d::Construct(f->cP(1)) - a) ^ (vcg::Point3d::Construct(f->cP(2)) - a)).Norm();
         cumulativeArea.push_back(total);
     }
-    // Random points, measured face by face: neighbouring lookups in a row are fast.
     struct Sample {
         std::size_t face;
         double u, v;
@@ -212,24 +224,106 @@ HausdorffStats oneSidedHausdorff(MeshFrom& from, detail::ClosestFace<MeshTo>& cl
         picks.push_back({k, u, v});
     }
     std::stable_sort(picks.begin(), picks.end(), [](const Sample& x, const Sample& y) { return x.face < y.face; });
+    points.reserve(points.size() + picks.size());
     for (const Sample& sample : picks) {
         const auto* f = sources[sample.face];
         const vcg::Point3d a = vcg::Point3d::Construct(f->cP(0));
         const vcg::Point3d b = vcg::Point3d::Construct(f->cP(1));
         const vcg::Point3d c = vcg::Point3d::Construct(f->cP(2));
-        measure(a + (b - a) * sample.u + (c - a) * sample.v);
+        points.push_back(a + (b - a) * sample.u + (c - a) * sample.v);
     }
-    s.mean = s.samples ? sum / double(s.samples) : 0.0;
-    s.rms = s.samples ? std::sqrt(sumSquares / double(s.samples)) : 0.0;
+    return result;
+}
+
+namespace detail {
+
+// `task(i)` for every i in [begin, end), handed to `together` in halves.
+template <class Task>
+void splitInHalves(std::size_t begin, std::size_t end, const RunTogether& together, const Task& task)
+{
+    if (end - begin == 1) {
+        task(begin);
+        return;
+    }
+    const std::size_t middle = begin + (end - begin) / 2;
+    together([&] { splitInHalves(begin, middle, together, task); }, [&] { splitInHalves(middle, end, together, task); });
+}
+
+// Distances of points[begin, end) to `closest`, into `distance` (same indexing).
+template <class MeshTo>
+DistanceSums measurePoints(const std::vector<vcg::Point3d>& points, std::size_t begin, std::size_t end,
+                           const ClosestFace<MeshTo>& closest, std::vector<double>& distance)
+{
+    DistanceSums sums;
+    std::int64_t hint = -1;
+    for (std::size_t i = begin; i < end; ++i) {
+        closest.find(points[i], distance[i], hint);
+        sums.add(distance[i]);
+    }
+    return sums;
+}
+
+}  // namespace detail
+
+// Distances from sample points (hausdorffSamples) to a mesh indexed by `closest`
+// (detail::ClosestFace, built once when many meshes are measured against the same one).
+// `vertexDistances`, when given, receives the distance of every vertex the points were
+// taken from (indexed like that mesh's vert; deleted vertices get 0). With `together`, the
+// points are measured in kHausdorffChunks fixed chunks, split in halves for it to run at
+// once (points far from the other surface take longer to look up, so a few chunks per
+// core keep the cores busy); the sums are added in chunk order, so the figures do not
+// depend on how they ran.
+template <class MeshTo>
+HausdorffStats distancesToSurface(const HausdorffSamples& samples, const detail::ClosestFace<MeshTo>& closest,
+                                  std::vector<double>* vertexDistances = nullptr, const RunTogether& together = {})
+{
+    HausdorffStats s;
+    if (vertexDistances)
+        vertexDistances->assign(samples.vertexCount, 0.0);
+    if (closest.empty() || samples.points.empty())
+        return s;
+
+    const std::vector<vcg::Point3d>& points = samples.points;
+    std::vector<double> distance(points.size(), 0.0);
+    detail::DistanceSums sums;
+    if (together) {
+        std::array<detail::DistanceSums, kHausdorffChunks> chunk;
+        detail::splitInHalves(0, kHausdorffChunks, together, [&](std::size_t c) {
+            chunk[c] = detail::measurePoints(points, points.size() * c / kHausdorffChunks,
+                                             points.size() * (c + 1) / kHausdorffChunks, closest, distance);
+        });
+        for (const auto& c : chunk)
+            sums.add(c);
+    } else {
+        sums = detail::measurePoints(points, 0, points.size(), closest, distance);
+    }
+    if (vertexDistances)
+        for (std::size_t i = 0; i < samples.vertexIndex.size(); ++i)
+            (*vertexDistances)[samples.vertexIndex[i]] = distance[i];
+
+    s.max = sums.max;
+    s.samples = sums.count;
+    s.mean = s.samples ? sums.sum / double(s.samples) : 0.0;
+    s.rms = s.samples ? std::sqrt(sums.sumSquares / double(s.samples)) : 0.0;
     return s;
+}
+
+// Distances from `faceSamples` area-uniform points on `from` (plus its vertices) to the
+// mesh `closest` indexes; see distancesToSurface.
+template <class MeshFrom, class MeshTo>
+HausdorffStats oneSidedHausdorff(MeshFrom& from, detail::ClosestFace<MeshTo>& closest, std::size_t faceSamples,
+                                 unsigned seed = 1, std::vector<double>* vertexDistances = nullptr,
+                                 const RunTogether& together = {})
+{
+    return distancesToSurface(hausdorffSamples(from, faceSamples, seed), closest, vertexDistances, together);
 }
 
 template <class MeshFrom, class MeshTo>
 HausdorffStats oneSidedHausdorff(MeshFrom& from, MeshTo& to, std::size_t faceSamples, unsigned seed = 1,
-                                 std::vector<double>* vertexDistances = nullptr)
+                                 std::vector<double>* vertexDistances = nullptr, const RunTogether& together = {})
 {
     detail::ClosestFace<MeshTo> closest(to);
-    return oneSidedHausdorff(from, closest, faceSamples, seed, vertexDistances);
+    return oneSidedHausdorff(from, closest, faceSamples, seed, vertexDistances, together);
 }
 
 // Both directions; fractions are of A's bounding-box diagonal.

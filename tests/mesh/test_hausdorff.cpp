@@ -102,3 +102,28 @@ TEST(ClosestFace, HausdorffOfAMeshJustLargerThanTheOtherIsItsOffset)
     const HausdorffStats h = oneSidedHausdorff(outer, inner, 20000);
     EXPECT_NEAR(h.max, 0.001 * 7.3, 1e-4);
 }
+
+TEST(Hausdorff, MeasuredInQuartersOnTwoThreadsItGivesTheSameFigures)
+{
+    TestMesh inner, outer;
+    offsetSphere(inner);
+    offsetSphere(outer);
+    const vcg::Point3f centre = inner.bbox.Center();
+    for (auto& v : outer.vert)
+        v.P() = centre + (v.P() - centre) * (1.0f + 0.01f * std::abs(v.P()[0] - centre[0]) / 7.3f);  // uneven offset
+    std::vector<double> serialVertices, threadedVertices, wholeVertices;
+    const HausdorffStats whole = oneSidedHausdorff(outer, inner, 20000, 1, &wholeVertices);
+    const HausdorffStats serial = oneSidedHausdorff(outer, inner, 20000, 1, &serialVertices, runInSequence);
+    const HausdorffStats threaded = oneSidedHausdorff(outer, inner, 20000, 1, &threadedVertices, runOnTwoThreads);
+    // Quarters added in a fixed order: bit for bit the same however they ran.
+    EXPECT_EQ(serial.max, threaded.max);
+    EXPECT_EQ(serial.mean, threaded.mean);
+    EXPECT_EQ(serial.rms, threaded.rms);
+    EXPECT_EQ(serialVertices, threadedVertices);
+    // And the same points as one pass: the same largest distance, sums up to rounding.
+    EXPECT_EQ(whole.samples, threaded.samples);
+    EXPECT_EQ(whole.max, threaded.max);
+    EXPECT_NEAR(whole.mean, threaded.mean, 1e-12 * whole.mean);
+    EXPECT_EQ(wholeVertices, threadedVertices);
+    EXPECT_GT(threaded.max, 0.005 * 7.3);
+}
