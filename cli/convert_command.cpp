@@ -13,6 +13,8 @@
 #include "core/lod_chain.h"
 #include "flt_writer.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <chrono>
 #include <deque>
 #include <memory>
@@ -72,6 +74,7 @@ LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& s
         o.cullPixels = a.cullPixels;
         o.hausdorffSamples = a.samples;
         applyProtection(a.protection, o.simplify);
+        o.runTogether = [](const Task& x, const Task& y) { tbb::parallel_invoke(x, y); };
         CoreMesh scratch;
         return buildLodChain<CoreMesh>(original, scratch, o, newLevel, progress::callback);
     }

@@ -176,12 +176,21 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
     if (chainMode(par)) {
         LodChainOptions options = readChainOptions(par);
         options.setId = setId;
-        // The chain simplifies a scratch copy level after level; a layer has what it needs.
-        MeshModel* scratch = md.addNewMesh("", QString("%1 scratch").arg(baseName), false);
-        scratch->updateDataMask(level0);
-        scratch->updateDataMask(MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK);
-        result = buildLodChain<CMeshO>(level0->cm, scratch->cm, options, newLevel, cb);
-        md.delMesh(scratch);
+        options.runTogether = runOnTwoThreads;
+        // The chain simplifies scratch copies of the model's pieces level after level; a
+        // layer has what they need (CMeshO's optional components, enabled like level 0's).
+        std::vector<MeshModel*> scratch;
+        auto newScratch = [&]() -> CMeshO& {
+            MeshModel* layer = md.addNewMesh("", QString("%1 scratch %2").arg(baseName).arg(scratch.size()), false);
+            layer->updateDataMask(level0);
+            layer->updateDataMask(MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK);
+            scratch.push_back(layer);
+            return layer->cm;
+        };
+        CMeshO& working = newScratch();
+        result = buildLodChain<CMeshO>(level0->cm, working, options, newLevel, cb, newScratch);
+        for (MeshModel* layer : scratch)
+            md.delMesh(layer);
     } else {
         LodSetOptions options = readListOptions(par);
         options.setId = setId;

@@ -4,27 +4,34 @@
 // Level k is meant for the distance d_k = d_first * ratio^(k-1), from d_first = d_fill / 32
 // (d_fill: where the model's diagonal spans the viewport height; a viewer may come closer,
 // and an over-tessellated CAD part loses most of its triangles there already). A distance
-// whose mesh is less than 10 % lighter than the last level's adds no level. Its budget is the error that projects to
-// the pixel error there. One collapse session (the quadrics carry the whole history, so
-// errors do not restart at each level) runs with that budget as its maximum error; there
-// features, part borders and whole small components give way as soon as breaking them
-// costs less than the budget (simplify.h). A copy of the mesh is then taken as level k and
-// measured against level 0 (symmetric Hausdorff); the ratio between the measured and the
-// requested error steers the next budget, so a collapse error that underestimates the
-// distance a viewer sees is corrected level by level. When the next distance passes the
-// point where the model is `proxyPixels` high, the chain ends with a proxy: one
-// axis-aligned box per remaining connected component (a box per part).
+// whose mesh is less than 10 % lighter than the last level's adds no level. Its budget is
+// the error that projects to the pixel error there. Collapse sessions run with that budget
+// as their maximum error, one per piece of the model (collapse_buckets.h: whole connected
+// components, side by side), each for the whole chain (the quadrics carry the whole
+// history, so errors do not restart at each level); there features, part borders and
+// whole small components give way as soon as breaking them costs less than the budget
+// (simplify.h). The pieces together are then taken as level k and measured against level
+// 0 (symmetric Hausdorff) while the sessions go on to the next level (the caller's
+// RunTogether may run both at once); the ratio between the measured and the requested
+// error steers the budgets from the level after next, so a collapse error that
+// underestimates the distance a viewer sees is corrected level by level. When the next
+// distance passes the point where the model is `proxyPixels` high, the chain ends with a
+// proxy: one axis-aligned box per remaining connected component (a box per part).
 //
 // Every level's range comes from its measured error (lod_plan.h): it is drawn from where
 // that error projects to the pixel error, until the next level's does. The last level is
 // drawn for ever unless `cullPixels` is set.
 #pragma once
 
+#include "collapse_buckets.h"
 #include "components.h"
 #include "lod_builder.h"
+#include "run_together.h"
 
 #include <cmath>
+#include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +45,7 @@ struct LodChainOptions {
     std::size_t hausdorffSamples = 0; // face samples per side; 0: as many as level-0 faces, 100 000 to 500 000
     SimplifyParams simplify;          // placement and protection; the budget is set per level
     int setId = 1;
+    RunTogether runTogether;          // measuring a level beside the next collapses; empty: in sequence
 };
 
 // Switch-in distance of the last level when the model is never culled.
@@ -48,7 +56,7 @@ inline constexpr double kCloseUpFactor = 32.0;
 // when measured against level 0: its points stand far from level 0, where each lookup is
 // slow, and a few dozen per face find the largest distance of a flat triangle to the
 // surface it replaces (MeshLab's Hausdorff filter samples one point per vertex).
-inline constexpr std::size_t kBackwardSamplesPerFace = 64;
+inline constexpr std::size_t kBackwardSamplesPerFace = 256;
 
 namespace detail {
 
@@ -105,15 +113,22 @@ void boxProxy(MeshType& m, double minSize, SimplifyStats& stats)
 
 }  // namespace detail
 
-// `newLevel(k)` returns an empty mesh for level k (k >= 1), as for buildLodSet; `scratch`
-// is an empty mesh with what cadlod::simplify needs, simplified level after level and
-// left in an unspecified state. The result has the same form as buildLodSet's;
-// result.steps holds, per kept level, the collapse statistics up to it, whose `relaxed`
-// lines say what gave way since the level before.
+// `newLevel(k)` returns an empty mesh for level k (k >= 1), as for buildLodSet; `working`
+// is an empty mesh with what cadlod::simplify needs, left in an unspecified state.
+// `newScratch` returns more such meshes, for the pieces of the model simplified side by
+// side (collapse_buckets.h); they may go once the call returns. Empty: default-constructed
+// meshes of the chain's own (enough where MeshType has no optional components to enable).
+// The result has the same form as buildLodSet's; result.steps holds, per kept level, the
+// collapse statistics up to it, whose `relaxed` lines say what gave way since the level
+// before.
 template <class MeshType>
 LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChainOptions& options,
-                           const std::function<MeshType&(int)>& newLevel, vcg::CallBackPos* progress = nullptr)
+                           const std::function<MeshType&(int)>& newLevel, vcg::CallBackPos* progress = nullptr,
+                           std::function<MeshType&()> newScratch = {})
 {
+    std::deque<MeshType> ownScratch;
+    if (!newScratch)
+        newScratch = [&]() -> MeshType& { return ownScratch.emplace_back(); };
     LodSetResult result;
     const ViewParams& view = options.view;
     if (!(view.fovYDegrees > 0 && view.fovYDegrees < 180) || !(view.viewportHeightPx >= 1) ||
@@ -139,17 +154,31 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
 
     const std::size_t samples =
         options.hausdorffSamples ? options.hausdorffSamples : std::clamp<std::size_t>(std::size_t(original.fn), 100000, 500000);
-    // Level 0's index for the points of the coarser levels, built once.
-    detail::ClosestFace<MeshType> toOriginal(original);
-    auto measure = [&](MeshType& mesh) {
-        SymmetricHausdorff h;
-        h.forward = oneSidedHausdorff(original, mesh, samples, 1);
-        h.backward = oneSidedHausdorff(mesh, toOriginal, std::min(samples, kBackwardSamplesPerFace * std::size_t(mesh.fn)), 2);
-        h.diagonal = result.modelSize;
-        return h;
+    const RunTogether together = options.runTogether ? options.runTogether : RunTogether(runInSequence);
+    // Level 0's points, and its index for the points of the coarser levels, made once
+    // (beside the first collapses, before anything is measured).
+    HausdorffSamples originalSamples;
+    std::optional<detail::ClosestFace<MeshType>> toOriginal;
+    auto indexOriginal = [&] {
+        together([&] { originalSamples = hausdorffSamples(original, samples, 1); },
+                 [&] { toOriginal.emplace(original); });
     };
-    auto addLevel = [&](MeshType& mesh, const SimplifyStats& stats) {
-        const SymmetricHausdorff h = measure(mesh);
+    struct Measures {
+        SymmetricHausdorff distance;
+        CompactnessStats compactness;
+    };
+    auto measure = [&](MeshType& mesh) {
+        Measures m;
+        SymmetricHausdorff& h = m.distance;
+        const std::size_t backwardSamples = std::min(samples, kBackwardSamplesPerFace * std::size_t(mesh.fn));
+        together([&] { h.forward = distancesToSurface(originalSamples, detail::ClosestFace<MeshType>(mesh), nullptr, together); },
+                 [&] { m.compactness = meshCompactness(mesh); });
+        h.backward = oneSidedHausdorff(mesh, *toOriginal, backwardSamples, 2, nullptr, together);
+        h.diagonal = result.modelSize;
+        return m;
+    };
+    auto addLevel = [&](MeshType& mesh, const SimplifyStats& stats, const Measures& measured) {
+        const SymmetricHausdorff& h = measured.distance;
         LodLevel level = level0;
         level.level = int(result.levels.size());
         level.faces = mesh.fn;
@@ -158,13 +187,13 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         level.hausdorffMean = h.mean();
         result.levels.push_back(level);
         result.distance.push_back(h);
-        result.compactness.push_back(meshCompactness(mesh));
+        result.compactness.push_back(measured.compactness);
         result.steps.push_back(stats);
         meshes.push_back(&mesh);
-        return h.max();
     };
 
-    // The working mesh: simplified level after level by one collapse session.
+    // The model, dealt into pieces that collapse sessions simplify side by side, level
+    // after level (the quadrics carry the whole history).
     detail::copyWithParts(working, original);
     vcg::tri::Allocator<MeshType>::CompactEveryVector(working);
     SimplifyParams params = options.simplify;
@@ -178,13 +207,14 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         result.error = why;
         return result;
     }
-    CollapseContext<MeshType> ctx;
-    if (!prepareCollapse(working, params, ctx, stats)) {
-        releaseCollapse(working, ctx);
-        result.error = "the mesh has no extent (all vertices coincide or are not finite)";
+    CollapseBuckets<MeshType> pieces(newScratch);
+    if (!pieces.prepare(working, params, why)) {
+        result.error = why;
         return result;
     }
+    working.Clear();
     stats.ok = true;
+    stats.diagonal = result.modelSize;
 
     const double dFill = detail::distanceForPixels(result.modelSize, view.viewportHeightPx, view);
     const double dProxy = detail::distanceForPixels(result.modelSize, options.proxyPixels, view);
@@ -193,34 +223,64 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // How much the measured Hausdorff distance exceeds the largest collapse error (an RMS
     // distance to the merged planes), learnt level by level.
     double hausdorffPerCollapseError = 2.0;
+    // A level copied out of the pieces, measured while their sessions go on to the next
+    // one. So the next budget uses the ratio learnt up to the level before it, one
+    // level late; that rule does not depend on how the two run, so neither does the chain.
+    struct Pending {
+        MeshType* mesh = nullptr;
+        SimplifyStats stats;
+        double collapseError = 0.0;
+        Measures measured;
+    };
+    Pending pending;
+    auto measurePending = [&] {
+        if (!toOriginal)
+            indexOriginal();
+        if (pending.mesh)
+            pending.measured = measure(*pending.mesh);
+    };
+    auto settlePending = [&] {
+        if (!pending.mesh)
+            return;
+        addLevel(*pending.mesh, pending.stats, pending.measured);
+        const double measured = pending.measured.distance.max();
+        if (measured > 0 && pending.collapseError > 0)
+            hausdorffPerCollapseError = std::clamp(measured / pending.collapseError, 1.0, 20.0);
+        pending = Pending();
+    };
+
     int k = 0;
     for (double d = dFill / kCloseUpFactor; d < dProxy; d *= options.distanceRatio, ++k) {
         const double budget = detail::errorBudgetAt(d, view);
         if (progress)
             progress(100 * k / (plannedLevels + 1), ("Simplifying for " + std::to_string(d) + " units").c_str());
-        ctx.maxErrorAbs = budget / hausdorffPerCollapseError;
+        const double bound = budget / hausdorffPerCollapseError;
         stats.targetFaces = 0;
-        stats.errorBound = ctx.maxErrorAbs;
-        const int before = working.fn;
-        collapseToTarget(working, ctx, stats, nullptr);
+        stats.errorBound = bound;
+        const int before = pieces.faces();
+        together(measurePending, [&] { pieces.collapse(bound, together); });
+        settlePending();
+        pieces.addStatsTo(stats);
         const int previous = result.levels.back().faces;
-        if (working.fn >= before || working.fn > 0.9 * previous)
+        const int faces = pieces.faces();
+        if (faces >= before || faces > 0.9 * previous)
             continue;  // too little lighter than the last level to be worth one
         MeshType& mesh = newLevel(int(result.levels.size()));
-        detail::copyWithParts(mesh, working);
-        vcg::tri::Allocator<MeshType>::CompactEveryVector(mesh);
+        pieces.appendTo(mesh);
         stats.facesAfter = mesh.fn;
-        stats.largestError = ctx.largestError;
-        const double measured = addLevel(mesh, stats);
+        stats.largestError = pieces.largestError();
+        pending.mesh = &mesh;
+        pending.stats = stats;
+        pending.collapseError = stats.largestError;
         stats.relaxed.clear();
-        if (measured > 0 && ctx.largestError > 0)
-            hausdorffPerCollapseError = std::clamp(measured / ctx.largestError, 1.0, 20.0);
     }
-    releaseCollapse(working, ctx);
+    pieces.release();
 
     // The proxy, when it is lighter than the last level.
+    pieces.appendTo(working);
     stats.errorBound = detail::errorBudgetAt(dProxy, view);
-    detail::boxProxy(working, stats.errorBound, stats);
+    together(measurePending, [&] { detail::boxProxy(working, stats.errorBound, stats); });
+    settlePending();
     if (working.fn > 0 && working.fn < result.levels.back().faces) {
         if (progress)
             progress(100 * plannedLevels / (plannedLevels + 1), "Measuring the box proxy");
@@ -229,7 +289,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         stats.facesAfter = proxy.fn;
         stats.relaxed.push_back("box proxy: one box per connected component (" + std::to_string(proxy.fn / 12) +
                                 " boxes)");
-        addLevel(proxy, stats);
+        addLevel(proxy, stats, measure(proxy));
     }
 
     detail::keepUsefulLevels(result, meshes);

@@ -122,6 +122,29 @@ TEST(LodChain, CullingEndsTheLastRangeWhereTheModelIsThatSmall)
     EXPECT_NEAR(projectedPixels(c.result.modelSize, d, options.view), 2.0, 1e-9);
 }
 
+TEST(LodChain, MeasuringBesideTheCollapsesOnTwoThreadsGivesTheSameChain)
+{
+    LodChainOptions threaded;
+    threaded.runTogether = runOnTwoThreads;
+    Chain one(assemblyBuilder()), two(assemblyBuilder(), threaded);
+    ASSERT_TRUE(one.result.ok()) << one.result.error;
+    ASSERT_TRUE(two.result.ok()) << two.result.error;
+    ASSERT_GE(one.result.levels.size(), 5u);
+    ASSERT_EQ(one.result.levels.size(), two.result.levels.size());
+    for (std::size_t i = 0; i < one.result.levels.size(); ++i) {
+        const LodLevel &a = one.result.levels[i], &b = two.result.levels[i];
+        EXPECT_EQ(a.faces, b.faces) << "level " << i;
+        EXPECT_EQ(a.hausdorffMax, b.hausdorffMax) << "level " << i;
+        EXPECT_EQ(a.hausdorffMean, b.hausdorffMean) << "level " << i;
+        EXPECT_EQ(a.switchIn, b.switchIn) << "level " << i;
+        EXPECT_EQ(a.switchOut, b.switchOut) << "level " << i;
+        TestMesh &ma = one.level(i), &mb = two.level(i);
+        ASSERT_EQ(ma.vert.size(), mb.vert.size());
+        for (std::size_t v = 0; v < ma.vert.size(); ++v)
+            ASSERT_EQ(ma.vert[v].cP(), mb.vert[v].cP()) << "level " << i << " vertex " << v;
+    }
+}
+
 TEST(LodChain, BadCameraIsAClearError)
 {
     LodChainOptions options;
