@@ -6,6 +6,8 @@
 #include "report_filter.h"
 #include "simplify_filter.h"
 
+#include <progress_lines.h>
+
 #include <vcg/complex/algorithms/stat.h>
 
 FilterCadLodPlugin::FilterCadLodPlugin()
@@ -127,12 +129,14 @@ void FilterCadLodPlugin::initParameterSet(QAction* action, MeshDocument& md, Ric
 }
 
 // meshlabserver prints only "Problem with filter" when a filter fails: the reason goes to
-// the log as well, so headless users see it.
+// the log as well, so headless users see it. Every filter reports progress through one
+// ProgressLines, so that meshlabserver prints its messages one per line.
 bool FilterCadLodPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& par,
                                      vcg::CallBackPos* cb)
 {
     errorMessage.clear();
-    const bool ok = apply(ID(action), md, par, cb);
+    cadlod::ProgressLines progress(cb);
+    const bool ok = apply(ID(action), md, par, progress.callback());
     if (!ok)
         Log(GLLogStream::WARNING, "%s failed: %s", qUtf8Printable(filterName(ID(action))),
             qUtf8Printable(errorMessage));

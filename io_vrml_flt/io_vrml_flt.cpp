@@ -2,6 +2,8 @@
 
 #include "format_adapters.h"
 
+#include <progress_lines.h>
+
 namespace {
 bool isVrml(const QString& format)
 {
@@ -55,10 +57,11 @@ bool IoVrmlFltPlugin::open(const QString& format, const QString& fileName, MeshM
     // MeshLab shows errorMessage after any open that logs or fails: a message left over
     // from an earlier failed save or open must not come back as a warning now.
     errorMessage.clear();
+    cadlod::ProgressLines progress(cb);  // one line per step if a headless caller prints them
     if (isVrml(format))
-        return cadlod::openVrml(*this, fileName, m, mask, par, cb, errorMessage);
+        return cadlod::openVrml(*this, fileName, m, mask, par, progress.callback(), errorMessage);
     if (isOpenFlight(format))
-        return cadlod::openOpenFlight(*this, fileName, m, mask, par, cb, errorMessage);
+        return cadlod::openOpenFlight(*this, fileName, m, mask, par, progress.callback(), errorMessage);
     errorMessage = "io_vrml_flt cannot open format " + format;
     return false;
 }
@@ -67,8 +70,9 @@ bool IoVrmlFltPlugin::save(const QString& format, const QString& fileName, MeshM
                            const RichParameterList& par, vcg::CallBackPos* cb, QWidget*)
 {
     errorMessage.clear();
+    cadlod::ProgressLines progress(cb);
     if (isOpenFlight(format))
-        return cadlod::saveOpenFlight(*this, fileName, m, mask, par, cb, errorMessage);
+        return cadlod::saveOpenFlight(*this, fileName, m, mask, par, progress.callback(), errorMessage);
     errorMessage = "io_vrml_flt cannot save format " + format;
     return false;
 }

@@ -74,10 +74,11 @@ start_xvfb() {
   say "Xvfb on $DISPLAY"
 }
 
-# meshlabserver ARGS...: a timeout, because a dialog would block it for ever.
+# meshlabserver ARGS...: a timeout, because a dialog would block it for ever; no qDebug,
+# which would echo every log line into the log a second time ("LOG: ...").
 mls() {
   echo "== meshlabserver $*" >>"$WORK/meshlabserver.log"
-  timeout 900 "$MLS" "$@" >>"$WORK/meshlabserver.log" 2>&1
+  QT_LOGGING_RULES='*.debug=false' timeout 900 "$MLS" "$@" >>"$WORK/meshlabserver.log" 2>&1
 }
 
 # complete_mlx IN OUT: IN with every parameter the staged plugins define (defaults for

@@ -40,15 +40,23 @@ std::string environmentPrefix()
     return env;
 }
 
+// Runs `command` under `timeout`; `redirections` say where its output goes.
+ServerRun runWithTimeout(const std::string& environment, const std::string& command, int timeoutSeconds,
+                         const std::string& redirections)
+{
+    const std::string line = environmentPrefix() + " " + environment + " timeout -k 5 " +
+                             std::to_string(timeoutSeconds) + " " + command + " " + redirections;
+    ServerRun run;
+    const int status = std::system(line.c_str());
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.timedOut = run.exitCode == 124 || run.exitCode == 137;
+    return run;
+}
+
 ServerRun runCommand(const std::string& command, const std::string& logFile, int timeoutSeconds)
 {
     const std::string outFile = logFile + ".out";
-    const std::string cmd = environmentPrefix() + " timeout -k 5 " + std::to_string(timeoutSeconds) + " " +
-                            command + " >" + shellQuote(outFile) + " 2>&1";
-    ServerRun run;
-    const int status = std::system(cmd.c_str());
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.timedOut = run.exitCode == 124 || run.exitCode == 137;
+    ServerRun run = runWithTimeout("", command, timeoutSeconds, ">" + shellQuote(outFile) + " 2>&1");
     run.output = readText(outFile) + readText(logFile);
     return run;
 }
@@ -71,23 +79,57 @@ ServerRun completeMlx(const std::string& script, const std::string& completed)
                       base + ".log", 60);
 }
 
-ServerRun runMeshlabServer(const std::vector<std::string>& args, int timeoutSeconds)
+namespace {
+
+// Appends `args` to `command`, each -s script replaced by its completed form (files named
+// after `base`); false, with the completion's run in `failure`, when one cannot be completed.
+bool appendArguments(std::string& command, const std::vector<std::string>& args, const std::string& base,
+                     ServerRun& failure)
 {
-    std::string command = shellQuote(CADLOD_STAGE_MESHLABSERVER);
-    const std::string base = nextRunBase();
-    command += " -l " + shellQuote(base + ".log");
     for (std::size_t i = 0; i < args.size(); ++i) {
         std::string arg = args[i];
         if (i > 0 && args[i - 1] == "-s") {
             const std::string completed = base + "-script" + std::to_string(i) + ".mlx";
             ServerRun completion = completeMlx(arg, completed);
-            if (!completion.ok())
-                return completion;
+            if (!completion.ok()) {
+                failure = completion;
+                return false;
+            }
             arg = completed;
         }
         command += " " + shellQuote(arg);
     }
+    return true;
+}
+
+}  // namespace
+
+ServerRun runMeshlabServer(const std::vector<std::string>& args, int timeoutSeconds)
+{
+    std::string command = shellQuote(CADLOD_STAGE_MESHLABSERVER);
+    const std::string base = nextRunBase();
+    command += " -l " + shellQuote(base + ".log");
+    ServerRun failure;
+    if (!appendArguments(command, args, base, failure))
+        return failure;
     return runCommand(command, base + ".log", timeoutSeconds);
+}
+
+ServerRun runMeshlabServerAsDocumented(const std::vector<std::string>& args, const std::string& environment,
+                                       int timeoutSeconds)
+{
+    std::string command = shellQuote(CADLOD_STAGE_MESHLABSERVER);
+    const std::string base = nextRunBase();
+    ServerRun failure;
+    if (!appendArguments(command, args, base, failure))
+        return failure;
+    const std::string outFile = base + ".stdout", errFile = base + ".stderr";
+    ServerRun run = runWithTimeout(environment, command, timeoutSeconds,
+                                   ">" + shellQuote(outFile) + " 2>" + shellQuote(errFile));
+    run.standardOutput = readText(outFile);
+    run.standardError = readText(errFile);
+    run.output = run.standardOutput + run.standardError;
+    return run;
 }
 
 std::string scratchDir(const std::string& testName)

@@ -12,6 +12,7 @@ struct ServerRun {
     int exitCode = -1;
     bool timedOut = false;
     std::string output;  // stdout + stderr + the -l log file
+    std::string standardOutput, standardError;  // apart: runMeshlabServerAsDocumented only
     bool ok() const { return exitCode == 0 && !timedOut; }
 };
 
@@ -19,6 +20,12 @@ struct ServerRun {
 // Scripts may name only the parameters they change: each -s script is first completed with
 // cadlod_mlx_complete (meshlabserver 2020.09 needs every parameter, in order).
 ServerRun runMeshlabServer(const std::vector<std::string>& args, int timeoutSeconds = 120);
+
+// Runs it as the README shows a user: no -l (meshlabserver prints the log on stdout),
+// `environment` before the command (e.g. "QT_LOGGING_RULES='*.debug=false'"), stdout and
+// stderr kept apart so that what each shows can be checked line by line.
+ServerRun runMeshlabServerAsDocumented(const std::vector<std::string>& args, const std::string& environment,
+                                       int timeoutSeconds = 120);
 
 // Writes the complete form of `script` (every parameter of every filter) to `completed`.
 ServerRun completeMlx(const std::string& script, const std::string& completed);

@@ -1,11 +1,13 @@
-// cadlod_mlx_complete PLUGIN_DIR IN.mlx OUT.mlx
+// cadlod_mlx_complete [--drop-unknown] PLUGIN_DIR IN.mlx OUT.mlx
 //
 // meshlabserver 2020.09 only runs a filter script that lists every parameter of every
 // filter, in the filter's own order (it asserts on anything shorter). This tool loads the
 // plugins, asks each filter of IN.mlx for its parameter list (defaults computed on a
 // tetrahedron, as MeshLab's own parameter map does), overrides the values IN.mlx gives, and
 // writes the complete script. An unknown filter or parameter name is an error (exit 2), so
-// a typo in a script is caught before meshlabserver runs.
+// a typo in a script is caught before meshlabserver runs. With --drop-unknown, a parameter
+// the filter does not define (one an older version had) is dropped with a warning instead:
+// for bringing an old complete script up to date, where a typo cannot be told from it.
 #include <common/filterscript.h>
 #include <common/interfaces.h>
 #include <common/pluginmanager.h>
@@ -57,8 +59,23 @@ void overrideValue(QDomElement& full, const QDomElement& given)
     }
 }
 
-bool completeFilter(PluginManager& pm, MeshDocument& md, const QDomElement& given, QDomDocument& out,
-                    QDomElement& root, QString& error)
+// A given parameter the filter does not define: an error, or with `dropUnknown` a warning.
+bool refuseOrDrop(const QString& filter, const QString& param, const QSet<QString>& known, bool dropUnknown,
+                  QString& error)
+{
+    if (dropUnknown) {
+        std::fprintf(stderr, "cadlod_mlx_complete: warning: filter \"%s\" has no parameter \"%s\": dropped\n",
+                     qUtf8Printable(filter), qUtf8Printable(param));
+        return true;
+    }
+    QStringList names(known.begin(), known.end());
+    names.sort();
+    error = "filter \"" + filter + "\" has no parameter \"" + param + "\" (it has: " + names.join(", ") + ")";
+    return false;
+}
+
+bool completeFilter(PluginManager& pm, MeshDocument& md, const QDomElement& given, bool dropUnknown,
+                    QDomDocument& out, QDomElement& root, QString& error)
 {
     const QString name = given.attribute("name");
     QAction* action = pm.actionFilterMap.value(name);
@@ -83,12 +100,8 @@ bool completeFilter(PluginManager& pm, MeshDocument& md, const QDomElement& give
         known.insert(rp.name());
     }
     for (const QString& p : givenParams.keys())
-        if (!known.contains(p)) {
-            QStringList names(known.begin(), known.end());
-            names.sort();
-            error = "filter \"" + name + "\" has no parameter \"" + p + "\" (it has: " + names.join(", ") + ")";
+        if (!known.contains(p) && !refuseOrDrop(name, p, known, dropUnknown, error))
             return false;
-        }
     root.appendChild(filter);
     return true;
 }
@@ -99,15 +112,20 @@ int main(int argc, char** argv)
 {
     qSetGlobalQHashSeed(0);  // the same attribute order every run
     QApplication app(argc, argv);
-    if (argc != 4)
-        return fail("usage: cadlod_mlx_complete PLUGIN_DIR IN.mlx OUT.mlx");
+    QStringList args = app.arguments().mid(1);
+    const bool dropUnknown = !args.isEmpty() && args.first() == "--drop-unknown";
+    if (dropUnknown)
+        args.removeFirst();
+    if (args.size() != 3)
+        return fail("usage: cadlod_mlx_complete [--drop-unknown] PLUGIN_DIR IN.mlx OUT.mlx");
+    const QString pluginDir = args[0], inPath = args[1], outPath = args[2];
 
     QDomDocument in;
     QString error;
-    if (!readXml(argv[2], in, error))
+    if (!readXml(inPath, in, error))
         return fail(error);
 
-    cadlod::test::PluginHost host(argv[1]);
+    cadlod::test::PluginHost host(pluginDir);
     PluginManager& pm = host.plugins;
     MeshDocument& md = host.document;
 
@@ -116,12 +134,12 @@ int main(int argc, char** argv)
     out.appendChild(root);
     const QDomElement script = in.documentElement();
     for (QDomElement f = script.firstChildElement("filter"); !f.isNull(); f = f.nextSiblingElement("filter"))
-        if (!completeFilter(pm, md, f, out, root, error))
-            return fail(QString(argv[2]) + ": " + error);
+        if (!completeFilter(pm, md, f, dropUnknown, out, root, error))
+            return fail(inPath + ": " + error);
 
-    QFile file(argv[3]);
+    QFile file(outPath);
     if (!file.open(QIODevice::WriteOnly))
-        return fail(QString(argv[3]) + ": cannot write");
+        return fail(outPath + ": cannot write");
     QTextStream stream(&file);
     out.save(stream, 1);
     return 0;
