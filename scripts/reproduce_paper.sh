@@ -414,17 +414,19 @@ shading_views() {
 
 # A model along the common path: triangles in the file, mean drawn per frame, frame rate.
 path_row() {  # name prefix file levels
-  local t0 f0 c0
+  local t0 o0 f0 c0
   t0=$(val path_mean_triangles "$WORK/exp2/level0.run1"); f0=$(cat "$WORK/exp2/level0.fps"); c0=$(cat "$WORK/exp2/level0.fpscpu")
-  printf '| %s | %s | %s | %s | %s | %.1f | %.1f | %s | %s |\n' "$1" "$4" "$(val triangles "$2.run1")" \
+  o0=$(val path_outside_mean_triangles "$WORK/exp2/level0.run1")
+  printf '| %s | %s | %s | %s | %s | %s | %s | %.1f | %.1f | %s | %s |\n' "$1" "$4" "$(val triangles "$2.run1")" \
     "$(val path_mean_triangles "$2.run1")" "$(ratio "$(val path_mean_triangles "$2.run1")" "$t0")" \
+    "$(val path_outside_mean_triangles "$2.run1")" "$(ratio "$(val path_outside_mean_triangles "$2.run1")" "$o0")" \
     "$(cat "$2.fps")" "$(cat "$2.fpscpu")" "$(ratio "$(cat "$2.fps")" "$f0")" "$(ratio "$(cat "$2.fpscpu")" "$c0")"
 }
 
 path_table() {
   local e="$WORK/exp2"
-  echo "| model | LOD levels | triangles in the file | mean triangles drawn per frame | share of level 0 alone | fps | fps by CPU time | fps ratio | fps-by-CPU ratio |"
-  echo "|---|---|---|---|---|---|---|---|---|"
+  echo "| model | LOD levels | triangles in the file | mean triangles drawn per frame | share of level 0 alone | the same, camera outside the bounding sphere | share | fps | fps by CPU time | fps ratio | fps-by-CPU ratio |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|"
   path_row "level 0 alone (no LOD)" "$e/level0" "$e/level0.flt" "–"
   path_row "the paper's list ($LEVELS %)" "$e/paper" "$e/paper.flt" "$(val lod_levels "$e/paper.run1")"
   path_row "screen-space chain (default)" "$e/chain" "$e/chain.flt" "$(val lod_levels "$e/chain.run1")"
@@ -572,7 +574,8 @@ cull does, LOD scale 1) and counts the triangles under the chosen children; view
 culling is not applied, so a frame counts every triangle selected, in view or not
 (\`tests/openflight/test_lod_path.cpp\` checks it on a three-level \`.flt\` with known ranges).
 They do not depend on the machine; the frame rates do. Ratios are against level 0 alone on
-the same path.
+the same path. "Camera outside the bounding sphere" keeps only the $(val path_outside_frames "$e2/chain.run1") frames from
+$(printf %.0f "$(val radius "$e2/chain.run1")") mm out, what a viewer who is not inside the assembly gets.
 
 $(path_table)
 

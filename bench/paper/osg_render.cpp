@@ -310,10 +310,12 @@ double pathDistance(const Options& o, int i)
 
 double pathAzimuth(const Options& o, int i) { return 360.0 * i / o.frames; }
 
-// What the LOD nodes select in every frame of the path: the mean triangles per frame, and
-// for each level the frames that drew it (first and last, with their distances). Counted
+// What the LOD nodes select in every frame of the path: the mean triangles per frame (all
+// frames, and those with the eye outside the bounding sphere), and for each level the frames
+// that drew it (first and last, with their distances). Counted
 // apart from the timed frames, which it would slow down.
-void printTrianglesAlongPath(const Options& o, cadlod::lodpath::LodPathCounter& counter, const osg::Vec3d& center)
+void printTrianglesAlongPath(const Options& o, cadlod::lodpath::LodPathCounter& counter, const osg::Vec3d& center,
+                             double radius)
 {
     std::vector<osg::Vec3d> eyes;
     for (int i = 0; i < o.frames; ++i)
@@ -321,6 +323,17 @@ void printTrianglesAlongPath(const Options& o, cadlod::lodpath::LodPathCounter& 
     const cadlod::lodpath::PathTally tally = counter.walk(eyes);
     std::printf("path_mean_triangles %.1f\npath_frames_drawing_nothing %d\n", tally.meanTriangles(),
                 tally.framesDrawingNothing);
+    // Levels switched in closer than the bounding radius are only drawn with the eye inside
+    // the model; the mean over the other frames is what a viewer outside it gets.
+    double outsideSum = 0;
+    int outsideFrames = 0;
+    for (int i = 0; i < o.frames; ++i)
+        if (pathDistance(o, i) >= radius) {
+            outsideSum += double(tally.trianglesPerFrame[std::size_t(i)]);
+            ++outsideFrames;
+        }
+    std::printf("path_outside_frames %d\npath_outside_mean_triangles %.1f\n", outsideFrames,
+                outsideFrames ? outsideSum / outsideFrames : 0.0);
     for (std::size_t k = 0; k < tally.levels.size(); ++k) {
         const cadlod::lodpath::LevelOnPath& on = tally.levels[k];
         std::printf("path_level %zu frames %d first %d last %d", k, on.frames, on.firstFrame, on.lastFrame);
@@ -395,7 +408,7 @@ int main(int argc, char** argv)
         return o.render ? writeShot(o, model.get(), box) : 0;
     choosePath(o, levels, bs.radius());
     printPath(o);
-    printTrianglesAlongPath(o, counter, bs.center());
+    printTrianglesAlongPath(o, counter, bs.center(), bs.radius());
     std::fflush(stdout);
     return o.render ? measureFrameRate(o, model.get(), bs) : 0;
 }
