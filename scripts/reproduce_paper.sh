@@ -104,6 +104,7 @@ has_filter() { grep -qF "section f" "$WORK/filters.txt" && grep -qF " $1 " "$WOR
 val() { awk -v k="$1" '$1 == k { print $2; exit }' "$2"; }
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (b > 0) ? a / b : 0 }'; }
+share() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f %%", (b > 0) ? 100 * a / b : 0 }'; }
 
 # ---------------------------------------------------------------- experiment 1
 # stock_qem IN OUT: MeshLab's QEM with its defaults, 90 %
@@ -418,8 +419,8 @@ path_row() {  # name prefix file levels
   t0=$(val path_mean_triangles "$WORK/exp2/level0.run1"); f0=$(cat "$WORK/exp2/level0.fps"); c0=$(cat "$WORK/exp2/level0.fpscpu")
   o0=$(val path_outside_mean_triangles "$WORK/exp2/level0.run1")
   printf '| %s | %s | %s | %s | %s | %s | %s | %.1f | %.1f | %s | %s |\n' "$1" "$4" "$(val triangles "$2.run1")" \
-    "$(val path_mean_triangles "$2.run1")" "$(ratio "$(val path_mean_triangles "$2.run1")" "$t0")" \
-    "$(val path_outside_mean_triangles "$2.run1")" "$(ratio "$(val path_outside_mean_triangles "$2.run1")" "$o0")" \
+    "$(val path_mean_triangles "$2.run1")" "$(share "$(val path_mean_triangles "$2.run1")" "$t0")" \
+    "$(val path_outside_mean_triangles "$2.run1")" "$(share "$(val path_outside_mean_triangles "$2.run1")" "$o0")" \
     "$(cat "$2.fps")" "$(cat "$2.fpscpu")" "$(ratio "$(cat "$2.fps")" "$f0")" "$(ratio "$(cat "$2.fpscpu")" "$c0")"
 }
 
