@@ -4,11 +4,14 @@
 #  - Experiment 1 (Fig. 6): docs/sample/shaft.wrl reduced by 90 % with MeshLab's stock
 #    "Quadric Edge Collapse Decimation" (defaults) and with cadlod's CAD Quadric Edge
 #    Collapse (defaults): shaded and wireframe pictures, compactness histograms and
-#    numbers, symmetric Hausdorff distance to the original.
-#  - Experiment 2 (Table 1): docs/sample/cad_assembly.wrl.gz as an LOD set at
-#    0/50/60/70/80/90 % reduction: triangles, .flt size, OpenSceneGraph load time and frame
-#    rate of every level alone and of the whole LOD set, as ratios against level 0 next to
-#    the paper's.
+#    numbers, symmetric Hausdorff distance to the original, and the shading-error measure
+#    (bench/shading) with its difference images.
+#  - Experiment 2 (Table 1): docs/sample/cad_assembly.wrl.gz at 0/50/60/70/80/90 %
+#    reduction: triangles, .flt size, OpenSceneGraph load time and frame rate of every level
+#    alone, as ratios against level 0 next to the paper's; then two whole LOD sets, the
+#    paper's list and the screen-space chain, along one camera path that backs away across
+#    every switch distance: triangles drawn per frame and per level (bench/lod_path) and
+#    frame rate.
 # Everything runs through the staged meshlabserver with cadlod's plugins; rendering is
 # OpenSceneGraph (bench/paper/osg_render) on a private Xvfb (Mesa software GL).
 #
@@ -46,16 +49,17 @@ die() { printf '[paper] ERROR: %s\n' "$*" >&2; exit 1; }
 build_tools() {
   local generator=()
   [ -f "$BUILD/CMakeCache.txt" ] || generator=(-G Ninja)
-  say "configuring and building in $BUILD (stage, osg_render, paper_measure, cadlod_mlx_complete)"
+  say "configuring and building in $BUILD (stage, osg_render, paper_measure, shading_compare, cadlod_mlx_complete)"
   cmake -S "$ROOT" -B "$BUILD" "${generator[@]}" -DCADLOD_BUILD_BENCH=ON -DCADLOD_BUILD_TESTS=ON \
     >"$WORK/build.log" 2>&1 || die "cmake configure failed, see $WORK/build.log"
-  cmake --build "$BUILD" --target stage osg_render paper_measure cadlod_mlx_complete -j2 >>"$WORK/build.log" 2>&1 ||
+  cmake --build "$BUILD" --target stage osg_render paper_measure shading_compare cadlod_mlx_complete -j2 >>"$WORK/build.log" 2>&1 ||
     die "build failed, see $WORK/build.log"
   MLS="$BUILD/stage/bin/meshlabserver"
   MLX_COMPLETE="$(find "$BUILD/tests" -name cadlod_mlx_complete -type f -perm -u+x | head -1)"
   [ -n "$MLX_COMPLETE" ] || die "cadlod_mlx_complete was not built"
   RENDER="$BUILD/bench/paper/osg_render"
   MEASURE="$BUILD/bench/paper/paper_measure"
+  SHADING="$BUILD/bench/shading/shading_compare"
 }
 
 XVFB_PID=""
@@ -101,6 +105,7 @@ has_filter() { grep -qF "section f" "$WORK/filters.txt" && grep -qF " $1 " "$WOR
 val() { awk -v k="$1" '$1 == k { print $2; exit }' "$2"; }
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", (b > 0) ? a / b : 0 }'; }
+share() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.1f %%", (b > 0) ? 100 * a / b : 0 }'; }
 
 # ---------------------------------------------------------------- experiment 1
 # stock_qem IN OUT: MeshLab's QEM with its defaults, 90 %
@@ -155,6 +160,46 @@ experiment1() {
   for m in stock cadlod; do measure_mesh "$e/$m.ply" "$e/original.ply"; done
   fig6_pictures "$e"
   fig6_histogram "$e"
+  fig6_shading "$e"
+}
+
+# The shading-error measure (docs/shading_measure.md) of both reductions against the
+# original, and their difference images: the difference panel of each of the 12 views.
+fig6_shading() {
+  local e="$1" m v
+  for m in stock cadlod; do
+    rm -f "$e/shading-$m-"view*.png
+    "$SHADING" "$e/original.ply" "$e/$m.ply" --images "$e/shading-$m-" >"$e/$m.shading" ||
+      die "shading_compare failed on $m"
+    for v in "$e/shading-$m-"view*.png; do
+      convert "$v" -crop 256x256+512+0 +repage "${v%.png}-diff.png"
+    done
+  done
+  for m in stock cadlod; do
+    montage "$e/shading-$m-"view*-diff.png -tile 6x2 -geometry 256x256+1+1 -background '#404040' \
+      -depth 8 "$IMG/paper-fig6-shading-$m.png"
+  done
+  montage -font DejaVu-Sans -pointsize 14 -background white \
+    -label "MeshLab QEM: $(shading_figures "$e/stock.shading")" "$e/shading-stock-view00.png" \
+    -label "cadlod: $(shading_figures "$e/cadlod.shading")" "$e/shading-cadlod-view00.png" \
+    -tile 1x2 -geometry +2+4 "$e/shading-view00.png"
+  convert "$e/shading-view00.png" -depth 8 "$IMG/paper-fig6-shading-view00.png"
+}
+
+# shading_figures FILE: "V % visible, mean |ΔI| M" from shading_compare's summary line
+shading_figures() {
+  printf '%s %%%% of pixels differ visibly, mean |ΔI| %s' "$(shading_value visible "$1")" "$(shading_value mean "$1")"
+}
+
+# shading_value visible|silhouette|mean FILE: one figure of shading_compare's summary line
+# ("visible difference V % of covered pixels (silhouette S %), mean |dI| M; ...")
+shading_value() {
+  awk -v what="$1" '/^visible difference/ {
+      line = $0
+      if (what == "visible") { sub(/^visible difference /, "", line); sub(/ %.*/, "", line) }
+      if (what == "silhouette") { sub(/.*\(silhouette /, "", line); sub(/ %.*/, "", line) }
+      if (what == "mean") { sub(/.*mean \|dI\| /, "", line); sub(/;.*/, "", line) }
+      print line; exit }' "$2"
 }
 
 # Shaded: the whole shaft from the side; wireframe: a close-up of the step from the
@@ -201,9 +246,9 @@ GP
 
 # ---------------------------------------------------------------- experiment 2
 experiment2() {
-  local e="$WORK/exp2" k pct
+  local e="$WORK/exp2" k pct set
   mkdir -p "$e"
-  rm -f "$e"/level*.ply "$e"/level*.flt "$e/lodset.flt"
+  rm -f "$e"/level*.ply "$e"/level*.flt "$e"/paper.flt "$e"/chain.flt
   say "experiment 2: the assembly at 0 $LEVELS %"
   mls -i "$ASSEMBLY" -o "$e/level0.ply" -m vn fc && [ -s "$e/level0.ply" ] || die "meshlabserver cannot read $ASSEMBLY"
   k=0
@@ -219,35 +264,65 @@ experiment2() {
     mls -i "$e/level$k.ply" -o "$e/level$k.flt" && [ -s "$e/level$k.flt" ] ||
       die "cadlod's OpenFlight exporter failed on level $k"
   done
-  whole_lod_set "$e"
-
-  say "rendering the whole LOD set (camera path near to far)"
-  measure_model "$e/lodset.flt" "$e/set" ""
-  PATH_NEAR=$(val path_near "$e/set.run1")
-  PATH_FAR=$(val path_far "$e/set.run1")
+  paper_lod_set "$e"
+  chain_lod_set "$e"
+  common_path "$e"
+  for set in paper chain; do
+    say "rendering the $set LOD set along the path"
+    measure_model "$e/$set.flt" "$e/$set" "--near $PATH_NEAR --far $PATH_FAR"
+  done
   for k in $(seq 0 "$n"); do
     say "rendering level $k alone"
     measure_model "$e/level$k.flt" "$e/level$k" "--near $PATH_NEAR --far $PATH_FAR"
   done
 }
 
-# The whole set as one .flt: the LOD-set filter, saved by cadlod's exporter; if that
-# fails, the same builder core through paper_measure. Sets SET_ROUTE.
-whole_lod_set() {
-  local e="$1" failure=""
-  if has_filter "$LOD_FILTER" && complete_mlx "$ROOT/bench/paper/lod_set_paper.mlx" "$WORK/lod_set_paper.mlx"; then
-    mls -i "$ASSEMBLY" -s "$WORK/lod_set_paper.mlx" -o "$e/lodset.flt" -l 0 || true
-    if [ -s "$e/lodset.flt" ]; then
-      SET_ROUTE="MeshLab filter \"$LOD_FILTER\" (levels $LEVELS, other parameters default), saved by cadlod's OpenFlight exporter"
-      return
-    fi
-    failure=$(awk -v start="$(grep -n -F -- "-s $WORK/lod_set_paper.mlx" "$WORK/meshlabserver.log" | tail -1 | cut -d: -f1)" \
-      'NR > start && /cannot write|[Ff]ailed/ { print; exit }' "$WORK/meshlabserver.log")
+# lod_set_filter MLX OUT: the LOD-set filter run by the script MLX on the assembly, all
+# its levels saved as one .flt by cadlod's OpenFlight exporter; false (with the reason in
+# FAILURE) when that does not work.
+lod_set_filter() {
+  local mlx="$1" out="$2" completed="$WORK/$(basename "$1")"
+  FAILURE="the plugin has no \"$LOD_FILTER\""
+  has_filter "$LOD_FILTER" && complete_mlx "$mlx" "$completed" || return 1
+  mls -i "$ASSEMBLY" -s "$completed" -o "$out" -l 0 || true
+  [ -s "$out" ] && return 0
+  FAILURE=$(awk -v start="$(grep -n -F -- "-s $completed" "$WORK/meshlabserver.log" | tail -1 | cut -d: -f1)" \
+    'NR > start && /cannot write|[Ff]ailed/ { print; exit }' "$WORK/meshlabserver.log")
+  return 1
+}
+
+# The paper's list as one .flt: the LOD-set filter with levelMode 1; if that fails, the
+# same builder core through paper_measure. Sets PAPER_SET_ROUTE.
+paper_lod_set() {
+  local e="$1"
+  if lod_set_filter "$ROOT/bench/paper/lod_set_paper.mlx" "$e/paper.flt"; then
+    PAPER_SET_ROUTE="MeshLab filter \"$LOD_FILTER\" with the level list $LEVELS (levelMode 1, other parameters default)"
+    return
   fi
   mkdir -p "$e/set-core"
   "$MEASURE" lodset "$e/level0.ply" "$e/set-core" "$LEVELS" >"$e/set-core/lodset.log" || die "LOD-set fallback failed"
-  cp "$e/set-core/lodset.flt" "$e/lodset.flt"
-  SET_ROUTE="cadlod's LOD-set builder core with its defaults (bench/paper/paper_measure), written by cadlod's OpenFlight core (one part per level), because ${failure:-the plugin has no \"$LOD_FILTER\"}"
+  cp "$e/set-core/lodset.flt" "$e/paper.flt"
+  PAPER_SET_ROUTE="cadlod's LOD-set builder core with the levels $LEVELS (bench/paper/paper_measure), written by cadlod's OpenFlight core (one part per level), because ${FAILURE:-the filter failed}"
+}
+
+# The screen-space chain, the LOD-set filter's default. Sets CHAIN_SET_ROUTE.
+chain_lod_set() {
+  lod_set_filter "$ROOT/bench/paper/lod_set_chain.mlx" "$1/chain.flt" ||
+    die "the LOD-set filter's screen-space chain failed: $FAILURE"
+  CHAIN_SET_ROUTE="MeshLab filter \"$LOD_FILTER\" with its defaults (screen-space chain: 1 px of measured error at 1080 px and 45°, distance ratio 2)"
+}
+
+# One camera path for every file: the union of the two sets' own paths over all their
+# levels (osg_render's default), so that both are measured on the same frames.
+common_path() {
+  local e="$1" set
+  for set in paper chain; do
+    "$RENDER" "$e/$set.flt" --no-render --frames "$FRAMES" >"$e/$set.path" 2>>"$WORK/render.log" ||
+      die "OpenSceneGraph cannot load $e/$set.flt"
+  done
+  PATH_NEAR=$(awk '$1 == "path_near" { print $2 }' "$e/paper.path" "$e/chain.path" | sort -g | head -1)
+  PATH_FAR=$(awk '$1 == "path_far" { print $2 }' "$e/paper.path" "$e/chain.path" | sort -g | tail -1)
+  say "camera path from $PATH_NEAR to $PATH_FAR model units"
 }
 
 # measure_model FILE PREFIX "EXTRA ARGS": PREFIX.load (median load s, MB), PREFIX.runN, PREFIX.fps
@@ -318,38 +393,72 @@ table1() {
       "$(ratio "$s" "$s0")" "$(ratio "${PAPER_MB[$k]}" "${PAPER_MB[0]}")"
     k=$((k + 1))
   done
-  local st sf sc sl ss
-  st=$(awk '$1 == "level" { s += $4 } END { print s }' "$e/set.load1")
-  sf=$(cat "$e/set.fps"); sc=$(cat "$e/set.fpscpu"); sl=$(cat "$e/set.load"); ss=$(stat -c %s "$e/lodset.flt")
-  printf '| whole LOD set, switching | %s | %s | %.4f | %.1f | %.1f | %s | %s | %s | %s | %s |\n' "$st" "$ss" "$sl" "$sf" "$sc" \
-    "$(ratio "$st" "$t0")" "$(ratio "$sf" "$f0")" "$(ratio "$sc" "$c0")" "$(ratio "$sl" "$l0")" "$(ratio "$ss" "$s0")"
 }
 
-lod_ranges() {
-  local e="$WORK/exp2"
-  echo "| level | triangles (as OpenSceneGraph draws them) | visible from | to | frames of the path |"
-  echo "|---|---|---|---|---|"
-  local k
-  for k in $(awk '$1 == "level" { print $2 }' "$e/set.load1"); do
-    awk -v k="$k" '$1 == "level" && $2 == k { printf "| %s | %s | %s | %s |", $2, $4, $6, $7 }' "$e/set.load1"
-    awk -v k="$k" '$1 == "frames_at_level" && $2 == k { printf " %s |\n", $3 }' "$e/set.run1"
+# Fig. 6 shading: the measure beside compactness and Hausdorff, per mesh.
+shading_row() {  # name file-prefix
+  printf '| %s | %s | %s %% | %s %% | %s | %s %% | %s |\n' "$1" "$(val faces "$2.compactness")" \
+    "$(shading_value visible "$2.shading")" "$(shading_value silhouette "$2.shading")" "$(shading_value mean "$2.shading")" \
+    "$(val max_pct_diag "$2.hausdorff")" "$(val mean "$2.compactness")"
+}
+
+# The visible share of every view, both reductions side by side.
+shading_views() {
+  local e="$WORK/exp1"
+  echo "| view | 0 | 1 | 2 | 3 | 4 | 5 | 6 | 7 | 8 | 9 | 10 | 11 |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+  local m name
+  for m in stock cadlod; do
+    name="MeshLab QEM"; [ "$m" = cadlod ] && name=cadlod
+    awk -v name="$name" '$1 ~ /^[0-9]+$/ && NF == 6 { row = row sprintf(" %.2f |", $5) } END { printf "| %s, visible %% |%s\n", name, row }' "$e/$m.shading"
   done
 }
 
-# Where the set's levels switch, against the size of the model and the camera path.
-set_note() {
+# A model along the common path: triangles in the file, mean drawn per frame, frame rate.
+path_row() {  # name prefix file levels
+  local t0 o0 f0 c0
+  t0=$(val path_mean_triangles "$WORK/exp2/level0.run1"); f0=$(cat "$WORK/exp2/level0.fps"); c0=$(cat "$WORK/exp2/level0.fpscpu")
+  o0=$(val path_outside_mean_triangles "$WORK/exp2/level0.run1")
+  printf '| %s | %s | %s | %s | %s | %s | %s | %.1f | %.1f | %s | %s |\n' "$1" "$4" "$(val triangles "$2.run1")" \
+    "$(val path_mean_triangles "$2.run1")" "$(share "$(val path_mean_triangles "$2.run1")" "$t0")" \
+    "$(val path_outside_mean_triangles "$2.run1")" "$(share "$(val path_outside_mean_triangles "$2.run1")" "$o0")" \
+    "$(cat "$2.fps")" "$(cat "$2.fpscpu")" "$(ratio "$(cat "$2.fps")" "$f0")" "$(ratio "$(cat "$2.fpscpu")" "$c0")"
+}
+
+path_table() {
   local e="$WORK/exp2"
-  awk -v near="$PATH_NEAR" -v far="$PATH_FAR" '
-    $1 == "level" { n++; last_out = $6 }
+  echo "| model | LOD levels | triangles in the file | mean triangles drawn per frame | share of level 0 alone | the same, camera outside the bounding sphere | share | fps | fps by CPU time | fps ratio | fps-by-CPU ratio |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|"
+  path_row "level 0 alone (no LOD)" "$e/level0" "$e/level0.flt" "–"
+  path_row "the paper's list ($LEVELS %)" "$e/paper" "$e/paper.flt" "$(val lod_levels "$e/paper.run1")"
+  path_row "screen-space chain (default)" "$e/chain" "$e/chain.flt" "$(val lod_levels "$e/chain.run1")"
+}
+
+# Every level of a set: its range, and the frames of the path that drew it.
+set_levels() {  # prefix
+  echo "| level | triangles | drawn from | to (mm) | frames of the path that drew it | first–last frame | camera distance of those frames (mm) |"
+  echo "|---|---|---|---|---|---|---|"
+  awk '$1 == "level" { tri[$2] = $4; from[$2] = $6; to[$2] = $7; n = $2 + 1 }
+       $1 == "path_level" { frames[$2] = $4; first[$2] = $6; last[$2] = $8; d0[$2] = $10; d1[$2] = $12 }
+       END { for (k = 0; k < n; k++)
+               printf "| %d | %s | %.4g | %s | %d | %s | %s |\n", k, tri[k], from[k], (to[k] + 0 >= 1e29) ? "never" : sprintf("%.4g", to[k]),
+                 frames[k], frames[k] ? first[k] "–" last[k] : "–", frames[k] ? sprintf("%.4g – %.4g", d0[k], d1[k]) : "–" }' "$1.run1"
+}
+
+# Where the path runs, against the size of the model and the first switch of each set.
+path_note() {
+  local e="$WORK/exp2"
+  awk -v near="$PATH_NEAR" -v far="$PATH_FAR" -v frames="$FRAMES" '
     $1 == "radius" { r = $2 }
-    END { printf "The set has %d levels; the coarsest is shown from %g model units on (the bounding radius is %g, the camera path runs from %.0f to %.0f).", n, last_out, r, near, far }' \
-    "$e/set.load1"
+    $1 == "level" && $2 == 1 { first[FILENAME ~ /chain/ ? "chain" : "paper"] = $6 }
+    END { printf "The path: %d frames; the camera orbits the assembly once while it backs away, log-spaced, from %.3g mm to %.4g mm from the centre. The bounding radius is %.4g mm: the whole assembly fills the 45° view from %.3g mm. The path starts closer, at half the first switch distance, because both sets switch level 0 out already at %.3g mm (the paper'"'"'s list) and %.3g mm (the chain), inside the assembly. It ends 1.25 times beyond the last switch between levels of either set.", frames, near, far, r, r / 0.41421356, first["paper"], first["chain"] }' \
+    "$e/paper.run1" "$e/chain.run1"
 }
 
 write_doc() {
   local e1="$WORK/exp1" e2="$WORK/exp2" cpu renderer
   cpu=$(awk -F: '/model name/ { sub(/^ +/, "", $2); print $2; exit }' /proc/cpuinfo)
-  renderer=$(awk '$1 == "gl_renderer" { $1 = ""; sub(/^ /, ""); print; exit }' "$e2/set.run1")
+  renderer=$(awk '$1 == "gl_renderer" { $1 = ""; sub(/^ /, ""); print; exit }' "$e2/chain.run1")
   {
     cat <<EOF
 # Reproducing the paper's experiments
@@ -395,31 +504,90 @@ bounding-box diagonal in brackets.
 
 ![compactness histogram](img/paper-fig6-compactness.png)
 
+### Shading, as a viewer sees it
+
+The paper's claim for Fig. 6 is about lighting uniformity and visual effect. Measured with
+cadlod's shading-error measure (\`bench/shading\`, \`shading_compare\`, described in
+[shading_measure.md](shading_measure.md)): both results and the original rendered the same way
+from 12 directions on a sphere (orthographic, framing the original's bounding sphere, 256×256
+pixels each), per-pixel shading of area-weighted vertex normals split at 30° creases, computed
+the same way for all three meshes. A pixel differs visibly when its intensity is off by more
+than 8/255 or only one of the two images covers it (silhouette); below about 0.2 % of the
+pixels nobody sees a difference. Mean |ΔI| is on the 0–255 scale over the pixels either image
+covers.
+
+| mesh | triangles | visible shading difference (% of covered pixels) | of which silhouette | mean \|ΔI\| | Hausdorff max (% diag) | compactness mean |
+|---|---|---|---|---|---|---|
+$(shading_row "MeshLab QEM" "$e1/stock")
+$(shading_row cadlod "$e1/cadlod")
+
+Per view (the share of covered pixels that differ visibly, %):
+
+$(shading_views)
+
+The first view, original | result | difference, for both (difference: red where only one
+image covers the pixel, yellow where the intensity differs visibly, grey below the threshold,
+brighter with |ΔI|):
+
+![shading difference, view 0](img/paper-fig6-shading-view00.png)
+
+The difference images of all 12 views (full size, views 0–5 above 6–11), MeshLab QEM:
+
+![shading difference of MeshLab QEM, 12 views](img/paper-fig6-shading-stock.png)
+
+cadlod:
+
+![shading difference of cadlod, 12 views](img/paper-fig6-shading-cadlod.png)
+
 ## Experiment 2 (Table 1): the assembly at 0/50/60/70/80/90 % reduction
 
-Input \`docs/sample/cad_assembly.wrl.gz\` (level 0). Each level is made from the original at
-its reduction by $LEVEL_ROUTE, and written alone as its own \`.flt\` by cadlod's OpenFlight
-exporter (meshlabserver, PLY to \`.flt\`; parts become Objects by face color). The whole LOD
-set: $SET_ROUTE.
+Input \`docs/sample/cad_assembly.wrl.gz\` (level 0, in millimetres). Each level is made from the
+original at its reduction by $LEVEL_ROUTE, and written alone as its own \`.flt\` by cadlod's
+OpenFlight exporter (meshlabserver, PLY to \`.flt\`; parts become Objects by face color).
 Load time: OpenSceneGraph \`readNodeFile\` wall clock (plugin preloaded), median of 5 fresh
-processes. Frame rate: \`osg_render\`, ${FRAMES} frames in a 640×480 window along one orbit whose
-distance grows geometrically from $(printf %.0f "$PATH_NEAR") to $(printf %.0f "$PATH_FAR") model units (the whole
-set's levels seen along it are listed below), the same path for every file, median of $RUNS runs;
-"fps by CPU time" divides the frames by the CPU time of the rendering process (Mesa draws in
-its threads), which a busy machine disturbs less than the wall clock. Triangles are the faces
-of each level's mesh; the whole set's are those of all its levels.
+processes. Frame rate: \`osg_render\`, ${FRAMES} frames in a 640×480 window along the camera path
+below (the same for every file), median of $RUNS runs; "fps by CPU time" divides the frames by
+the CPU time of the rendering process (Mesa draws in its threads), which a busy machine
+disturbs less than the wall clock. Triangles are the faces of each level's mesh.
 Ratios are against level 0; the paper's ratios are in brackets (paper Table 1: triangles
 47512/23189/8852/6189/4339/4672, fps 66/79/83/95/102/117, load 0.53/0.47/0.31/0.26/0.19/0.11 s,
 6.4/3.7/2.3/2.0/1.3/0.75 MB).
 
 $(table1)
 
-LOD ranges of the whole set as OpenSceneGraph reads them, and how many frames of the camera
-path each level was the visible one:
+### The LOD sets along a camera path over every level
 
-$(lod_ranges)
+A simulator loads one \`.flt\` with all levels and lets its LOD nodes pick one by the
+distance. Two sets of the same assembly:
 
-$(set_note)
+- **the paper's list**: $PAPER_SET_ROUTE;
+- **the screen-space chain**: $CHAIN_SET_ROUTE.
+
+Both keep the file's millimetres; \`cadlod convert docs/sample/cad_assembly.wrl.gz --lod auto\`
+(or \`--lod "$LEVELS"\`) without \`--unit\` gives the same levels. With \`--unit mm\` the
+command scales to metres in the importer, before simplifying, and its chain differs a little
+(the README says why).
+
+$(path_note)
+
+Triangles drawn are those the LOD nodes select in each frame: \`bench/lod_path\` walks the
+scene from the frame's eye with OpenSceneGraph's own \`osg::LOD\` selection (as the viewer's
+cull does, LOD scale 1) and counts the triangles under the chosen children; view-frustum
+culling is not applied, so a frame counts every triangle selected, in view or not
+(\`tests/openflight/test_lod_path.cpp\` checks it on a three-level \`.flt\` with known ranges).
+They do not depend on the machine; the frame rates do. Ratios are against level 0 alone on
+the same path. "Camera outside the bounding sphere" keeps only the $(val path_outside_frames "$e2/chain.run1") frames from
+$(printf %.0f "$(val radius "$e2/chain.run1")") mm out, what a viewer who is not inside the assembly gets.
+
+$(path_table)
+
+The paper's list, level by level (\`.flt\` ranges as OpenSceneGraph reads them, in mm):
+
+$(set_levels "$e2/paper")
+
+The screen-space chain, level by level:
+
+$(set_levels "$e2/chain")
 
 ## Notes
 
@@ -429,12 +597,19 @@ $(set_note)
   on vertices, so its frame rate follows the triangle count more closely than a GPU's.
 - Load times of files this small are a few milliseconds; they are medians of fresh
   processes with the file in the page cache.
-- The whole-set row is not in the paper: it is the single \`.flt\` a simulator would load,
-  with the switch distances the LOD-set filter derived from each level's error (1 pixel at
-  1080 pixels and 45°, its defaults).
-- Tools: \`bench/paper/osg_render\` (load, memory, frame rate along the path, \`--level K\` to
-  show one level of a set, \`--shot\` pictures) and \`bench/paper/paper_measure\` (compactness,
-  Hausdorff distance, and core fallbacks when a filter is missing from the plugin).
+- The path rows are not in the paper (it gives each level alone). Both sets switch from
+  each level's measured error at 1 pixel, 1080 pixels and 45°; the paper's list spends its
+  levels within a few centimetres of the centre, where a viewer is inside the assembly,
+  and draws its 90 % level from there on until the assembly is about one pixel high. The camera
+  backs away log-spaced, so each factor of distance gets the same number of frames: the
+  mean triangles per frame weigh every distance band alike, not the time a viewer spends in it.
+- Frame rate under Xvfb and Mesa's llvmpipe on 2 shared cores is what it is: it includes
+  the software rasteriser's per-pixel cost, which is the same for every level when the
+  assembly fills the window; the triangle counts are the robust figure.
+- Tools: \`bench/paper/osg_render\` (load, memory, frame rate and triangles drawn along the
+  path, \`--level K\` to show one level of a set, \`--shot\` pictures), \`bench/paper/paper_measure\`
+  (compactness, Hausdorff distance, and core fallbacks when a filter is missing from the
+  plugin) and \`bench/shading/shading_compare\` (the shading-error measure).
 
 ## Reproduce
 

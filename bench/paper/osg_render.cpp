@@ -1,15 +1,17 @@
 // osg_render: what a VR engine user of a model sees (paper §5, Table 1), measured with
 // OpenSceneGraph on the current X display: load time (wall clock), peak memory,
 // triangles per LOD level, and the frame rate along a fixed camera path that orbits the
-// model while moving from near to far, so the OpenFlight LOD ranges switch levels.
+// model while backing away from it, log-spaced, across every OpenFlight LOD switch
+// distance (bench/lod_path), with the triangles the LOD nodes select in each frame.
 // `--level K` shows only level K of every LOD (or use a plain mesh file) to measure one
 // level alone; `--shot FILE` writes one shaded (optionally wireframe) picture instead.
 // Output: one "key value" line per figure, for scripts.
+#include "lod_path.h"
+
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geometry>
 #include <osg/LOD>
 #include <osg/Material>
-#include <osg/TriangleFunctor>
 #include <osgDB/ReadFile>
 #include <osgDB/Registry>
 #include <osgDB/WriteFile>
@@ -25,11 +27,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
-#include <map>
 #include <string>
 #include <vector>
 
 namespace {
+
+using cadlod::lodpath::Level;
+using cadlod::lodpath::LodChildRef;
 
 constexpr double kFovY = 45.0;  // degrees, like the LOD-set filter's default
 
@@ -149,83 +153,6 @@ osg::ref_ptr<osg::Node> loadTimed(const std::string& file, double& seconds)
     return node;
 }
 
-// Degenerate triangles (from stitched triangle strips) are not counted.
-struct TriangleCounter {
-    std::size_t count = 0;
-    void operator()(const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c)
-    {
-        count += a != b && b != c && a != c;
-    }
-};
-
-// Triangles of every drawable below a node, all LOD children included.
-class CountTriangles : public osg::NodeVisitor
-{
-public:
-    CountTriangles() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
-    void apply(osg::Drawable& d) override
-    {
-        osg::TriangleFunctor<TriangleCounter> f;
-        d.accept(f);
-        triangles += f.count;
-    }
-    std::size_t triangles = 0;
-};
-
-std::size_t trianglesBelow(osg::Node& n)
-{
-    CountTriangles c;
-    n.accept(c);
-    return c.triangles;
-}
-
-// One child of one osg::LOD. The OpenFlight reader turns every LOD record into an
-// osg::LOD with one child, so a level is the set of children sharing a range.
-struct LodChild {
-    osg::LOD* lod;
-    unsigned child;
-};
-
-struct Level {
-    float nearRange = 0;  // visible for nearRange <= d < farRange
-    float farRange = 0;
-    std::vector<LodChild> children;
-    std::size_t triangles = 0;
-};
-
-class CollectLods : public osg::NodeVisitor
-{
-public:
-    CollectLods() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
-    void apply(osg::LOD& lod) override
-    {
-        for (unsigned i = 0; i < lod.getNumChildren() && i < lod.getNumRanges(); ++i)
-            children.push_back({&lod, i});
-        traverse(lod);
-    }
-    std::vector<LodChild> children;
-};
-
-// Levels sorted from finest (nearest range) to coarsest.
-std::vector<Level> findLevels(osg::Node& root)
-{
-    CollectLods c;
-    root.accept(c);
-    std::map<std::pair<float, float>, Level> byRange;
-    for (const LodChild& lc : c.children) {
-        const auto range = std::make_pair(lc.lod->getMinRange(lc.child), lc.lod->getMaxRange(lc.child));
-        Level& level = byRange[range];
-        level.nearRange = range.first;
-        level.farRange = range.second;
-        level.children.push_back(lc);
-        level.triangles += trianglesBelow(*lc.lod->getChild(lc.child));
-    }
-    std::vector<Level> levels;
-    for (auto& entry : byRange)
-        levels.push_back(entry.second);
-    return levels;
-}
-
 // Shows level `k` at every distance and hides the others.
 void pinLevel(std::vector<Level>& levels, int k)
 {
@@ -234,7 +161,7 @@ void pinLevel(std::vector<Level>& levels, int k)
         std::exit(1);
     }
     for (int i = 0; i < int(levels.size()); ++i)
-        for (const LodChild& lc : levels[std::size_t(i)].children)
+        for (const LodChildRef& lc : levels[std::size_t(i)].children)
             lc.lod->setRange(lc.child, 0.0f, i == k ? std::numeric_limits<float>::max() : 0.0f);
 }
 
@@ -309,13 +236,19 @@ osg::Vec3d unitAxis(int i)
 }
 
 // Azimuth turns about the up axis; elevation lifts the eye towards it.
-void lookAt(osgViewer::Viewer& viewer, const osg::Vec3d& target, int upAxis, double distance, double azimuthDeg,
-            double elevationDeg)
+osg::Vec3d eyePosition(const osg::Vec3d& target, int upAxis, double distance, double azimuthDeg, double elevationDeg)
 {
     const double az = osg::DegreesToRadians(azimuthDeg), el = osg::DegreesToRadians(elevationDeg);
     const osg::Vec3d up = unitAxis(upAxis), a = unitAxis(upAxis + 1), b = unitAxis(upAxis + 2);
     const osg::Vec3d dir = (a * std::cos(az) + b * std::sin(az)) * std::cos(el) + up * std::sin(el);
-    viewer.getCamera()->setViewMatrixAsLookAt(target + dir * distance, target, up);
+    return target + dir * distance;
+}
+
+void lookAt(osgViewer::Viewer& viewer, const osg::Vec3d& target, int upAxis, double distance, double azimuthDeg,
+            double elevationDeg)
+{
+    viewer.getCamera()->setViewMatrixAsLookAt(eyePosition(target, upAxis, distance, azimuthDeg, elevationDeg), target,
+                                              unitAxis(upAxis));
 }
 
 struct Capture : osg::Camera::DrawCallback {
@@ -355,79 +288,83 @@ int writeShot(const Options& o, osg::Node* model, const osg::BoundingBox& box)
     return 0;
 }
 
-// The farthest finite switch-in distance.
-double farthestRange(const std::vector<Level>& levels, double radius)
-{
-    double far = 0;
-    for (const Level& l : levels)
-        if (l.farRange < 1e6 * radius)
-            far = std::max(far, double(l.farRange));
-    return far;
-}
-
-// The distance at which the bounding sphere looks `pixels` tall in the window.
-double distanceForHeight(const Options& o, double radius, double pixels)
-{
-    return radius * o.height / (pixels * std::tan(osg::DegreesToRadians(kFovY / 2)));
-}
-
-// Default path: from just outside the bounding sphere to where the model is 16 pixels
-// tall, or past the last LOD switch if that comes first.
+// The default path sweeps every level (see cadlod::lodpath::pathOverEveryLevel); --near and
+// --far override either end.
 void choosePath(Options& o, const std::vector<Level>& levels, double radius)
 {
+    const cadlod::lodpath::PathEnds ends = cadlod::lodpath::pathOverEveryLevel(levels, radius, kFovY, o.height);
     if (o.nearDistance <= 0)
-        o.nearDistance = 1.5 * radius;
-    if (o.farDistance <= 0) {
-        o.farDistance = distanceForHeight(o, radius, 16);
-        const double lastSwitch = farthestRange(levels, radius);
-        if (lastSwitch > o.nearDistance)
-            o.farDistance = std::min(o.farDistance, 1.25 * lastSwitch);
-    }
+        o.nearDistance = ends.nearDistance;
+    if (o.farDistance <= 0)
+        o.farDistance = ends.farDistance;
     if (o.farDistance <= o.nearDistance)
         o.farDistance = 2 * o.nearDistance;
 }
 
-// Frame i of n: one full orbit while the distance grows geometrically from near to far.
+// Frame i of n: one full orbit while the distance grows log-spaced from near to far.
 double pathDistance(const Options& o, int i)
 {
     const double t = double(i) / (o.frames - 1);
     return o.nearDistance * std::pow(o.farDistance / o.nearDistance, t);
 }
 
-int levelAt(const std::vector<Level>& levels, double distance)
+double pathAzimuth(const Options& o, int i) { return 360.0 * i / o.frames; }
+
+// What the LOD nodes select in every frame of the path: the mean triangles per frame (all
+// frames, and those with the eye outside the bounding sphere), and for each level the frames
+// that drew it (first and last, with their distances). Counted
+// apart from the timed frames, which it would slow down.
+void printTrianglesAlongPath(const Options& o, cadlod::lodpath::LodPathCounter& counter, const osg::Vec3d& center,
+                             double radius)
 {
-    for (std::size_t k = 0; k < levels.size(); ++k)
-        if (levels[k].nearRange <= distance && distance < levels[k].farRange)
-            return int(k);
-    return -1;
+    std::vector<osg::Vec3d> eyes;
+    for (int i = 0; i < o.frames; ++i)
+        eyes.push_back(eyePosition(center, o.upAxis, pathDistance(o, i), pathAzimuth(o, i), o.elevation));
+    const cadlod::lodpath::PathTally tally = counter.walk(eyes);
+    std::printf("path_mean_triangles %.1f\npath_frames_drawing_nothing %d\n", tally.meanTriangles(),
+                tally.framesDrawingNothing);
+    // Levels switched in closer than the bounding radius are only drawn with the eye inside
+    // the model; the mean over the other frames is what a viewer outside it gets.
+    double outsideSum = 0;
+    int outsideFrames = 0;
+    for (int i = 0; i < o.frames; ++i)
+        if (pathDistance(o, i) >= radius) {
+            outsideSum += double(tally.trianglesPerFrame[std::size_t(i)]);
+            ++outsideFrames;
+        }
+    std::printf("path_outside_frames %d\npath_outside_mean_triangles %.1f\n", outsideFrames,
+                outsideFrames ? outsideSum / outsideFrames : 0.0);
+    for (std::size_t k = 0; k < tally.levels.size(); ++k) {
+        const cadlod::lodpath::LevelOnPath& on = tally.levels[k];
+        std::printf("path_level %zu frames %d first %d last %d", k, on.frames, on.firstFrame, on.lastFrame);
+        if (on.frames > 0)
+            std::printf(" from %.6g to %.6g", pathDistance(o, on.firstFrame), pathDistance(o, on.lastFrame));
+        std::printf("\n");
+    }
 }
 
-int measureFrameRate(Options& o, osg::Node* model, const osg::BoundingSphere& bs, const std::vector<Level>& levels)
+void printPath(const Options& o)
 {
-    choosePath(o, levels, bs.radius());
+    std::printf("path_near %.6g\npath_far %.6g\nframes %d\n", o.nearDistance, o.farDistance, o.frames);
+}
+
+int measureFrameRate(const Options& o, osg::Node* model, const osg::BoundingSphere& bs)
+{
     osg::ref_ptr<osgViewer::Viewer> viewer = makeViewer(o, model);
     for (int i = 0; i < 5; ++i) {  // first frames compile display lists and shaders
         lookAt(*viewer, bs.center(), o.upAxis, pathDistance(o, i * (o.frames - 1) / 4), 0, o.elevation);
         viewer->frame();
     }
-    std::vector<int> framesAtLevel(levels.size() + 1, 0);
     const double cpuStart = cpuSeconds();
     const auto start = std::chrono::steady_clock::now();
     for (int i = 0; i < o.frames; ++i) {
-        const double d = pathDistance(o, i);
-        lookAt(*viewer, bs.center(), o.upAxis, d, 360.0 * i / o.frames, o.elevation);
+        lookAt(*viewer, bs.center(), o.upAxis, pathDistance(o, i), pathAzimuth(o, i), o.elevation);
         viewer->frame();
-        if (o.level < 0 && !levels.empty())
-            ++framesAtLevel[std::size_t(levelAt(levels, d) + 1)];
     }
     const double seconds = secondsSince(start);
     const double cpu = cpuSeconds() - cpuStart;
-    std::printf("path_near %.6g\npath_far %.6g\nframes %d\nrender_seconds %.4f\nfps %.2f\n", o.nearDistance,
-                o.farDistance, o.frames, seconds, o.frames / seconds);
+    std::printf("render_seconds %.4f\nfps %.2f\n", seconds, o.frames / seconds);
     std::printf("cpu_seconds %.4f\nfps_cpu %.2f\n", cpu, cpu > 0 ? o.frames / cpu : 0.0);
-    if (o.level < 0)
-        for (std::size_t k = 0; k < levels.size(); ++k)
-            std::printf("frames_at_level %zu %d\n", k, framesAtLevel[k + 1]);
     std::printf("peak_rss_kb %.0f\n", peakRssKb());
     return 0;
 }
@@ -446,8 +383,9 @@ int main(int argc, char** argv)
     std::printf("model %s\nload_seconds %.4f\npeak_rss_after_load_kb %.0f\n", o.model.c_str(), loadSeconds,
                 peakRssKb());
 
-    std::vector<Level> levels = findLevels(*model);
-    std::printf("triangles %zu\nlod_levels %zu\n", trianglesBelow(*model), levels.size());
+    cadlod::lodpath::LodPathCounter counter(*model);
+    std::vector<Level> levels = counter.levels();
+    std::printf("triangles %zu\nlod_levels %zu\n", cadlod::lodpath::trianglesBelow(*model), levels.size());
     for (std::size_t k = 0; k < levels.size(); ++k)
         std::printf("level %zu triangles %zu range %.6g %.6g\n", k, levels[k].triangles, levels[k].nearRange,
                     levels[k].farRange);
@@ -466,7 +404,11 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "osg_render: %s has no geometry\n", o.model.c_str());
         return 1;
     }
-    if (!o.render)
-        return 0;
-    return o.shot.empty() ? measureFrameRate(o, model.get(), bs, levels) : writeShot(o, model.get(), box);
+    if (!o.shot.empty())
+        return o.render ? writeShot(o, model.get(), box) : 0;
+    choosePath(o, levels, bs.radius());
+    printPath(o);
+    printTrianglesAlongPath(o, counter, bs.center(), bs.radius());
+    std::fflush(stdout);
+    return o.render ? measureFrameRate(o, model.get(), bs) : 0;
 }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Smoke test of osg_render (ctest, xvfb fixture): a two-triangle PLY and a two-level LOD set
-# written by paper_measure load, count and render, a picture is written, and a level that
-# does not exist is refused.
+# written by paper_measure load, count and render, the default camera path draws both
+# levels, a picture is written, and a level that does not exist is refused.
 #   osg_render_smoke.sh OSG_RENDER PAPER_MEASURE DISPLAY_FILE SCRATCH_DIR
 set -euo pipefail
 render=$1 measure=$2 display_file=$3 dir=$4
@@ -35,6 +35,8 @@ awk '$1 == "fps" && $2 > 0 { ok = 1 } END { exit !ok }' "$dir/plain.out" || fail
 [ "$(val lod_levels "$dir/set.out")" = 2 ] || fail "expected 2 LOD levels: $(cat "$dir/set.out")"
 awk '$1 == "level" && $2 == 1 && $4 < 16 && $4 > 0 { ok = 1 } END { exit !ok }' "$dir/set.out" ||
   fail "level 1 should have fewer triangles than level 0: $(cat "$dir/set.out")"
+awk '$1 == "path_level" && $4 > 0 { n++ } END { exit n != 2 }' "$dir/set.out" ||
+  fail "the default camera path should draw both levels: $(grep path_ "$dir/set.out")"
 "$render" "$dir/lodset.flt" --level 1 --frames 10 --size 64x48 >/dev/null || fail "--level 1 refused"
 if "$render" "$dir/lodset.flt" --level 2 --no-render >/dev/null 2>&1; then fail "--level 2 accepted"; fi
 echo "osg_render smoke test passed"
