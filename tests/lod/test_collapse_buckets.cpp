@@ -1,0 +1,119 @@
+// The model's pieces simplified side by side (core/collapse_buckets.h): how components
+// are dealt into buckets, and what the sessions may remove.
+#include "cad_meshes.h"
+#include "test_mesh.h"
+
+#include "core/collapse_buckets.h"
+
+#include <gtest/gtest.h>
+
+#include <deque>
+#include <map>
+#include <set>
+
+using namespace cadlod;
+using namespace cadlod::test;
+
+namespace {
+
+// The board assembly plus an unwelded copy of its first chip (a separate component whose
+// vertices stand where the chip's stand: the two touch) as a part of its own.
+void boardWithTouchingCopy(TestMesh& m, int& chipPart, int& copyPart)
+{
+    CadBuilder b;
+    circuitBoard(b);
+    chipPart = 1;
+    copyPart = b.currentPart + 1;
+    b.currentPart = copyPart;
+    const std::size_t triangles = b.triangles.size();
+    std::map<int, int> copyOf;
+    for (std::size_t t = 0; t < triangles; ++t) {
+        if (b.part[t] != chipPart)
+            continue;
+        std::array<int, 3> v{};
+        for (int j = 0; j < 3; ++j) {
+            const int p = b.triangles[t][std::size_t(j)];
+            if (!copyOf.count(p))
+                copyOf[p] = b.addPoint(b.points[std::size_t(p)][0], b.points[std::size_t(p)][1], b.points[std::size_t(p)][2]);
+            v[std::size_t(j)] = copyOf[p];
+        }
+        b.addTriangle(v[0], v[2], v[1]);  // the other side of the same surface
+    }
+    b.build(m, true);
+}
+
+struct Dealt {
+    TestMesh model;
+    std::deque<TestMesh> meshes;
+    CollapseBuckets<TestMesh> buckets{[this]() -> TestMesh& { return meshes.emplace_back(); }};
+    int chipPart = 0, copyPart = 0;
+
+    Dealt()
+    {
+        boardWithTouchingCopy(model, chipPart, copyPart);
+        std::string error;
+        EXPECT_TRUE(buckets.prepare(model, SimplifyParams{}, error)) << error;
+    }
+    // Per part, the buckets holding its faces.
+    std::map<int, std::set<std::size_t>> bucketsOfPart()
+    {
+        std::map<int, std::set<std::size_t>> where;
+        for (std::size_t i = 0; i < meshes.size(); ++i) {
+            auto part = facePartHandle(meshes[i]);
+            for (auto& f : meshes[i].face)
+                if (!f.IsD())
+                    where[part[f]].insert(i);
+        }
+        return where;
+    }
+};
+
+}  // namespace
+
+TEST(CollapseBuckets, EveryComponentGoesWholeIntoOneBucketAndTouchingOnesShareIt)
+{
+    Dealt d;
+    ASSERT_EQ(d.meshes.size(), kMaxCollapseBuckets);  // 40 parts, more than the buckets
+    int faces = 0;
+    for (const TestMesh& m : d.meshes)
+        faces += m.fn;
+    EXPECT_EQ(faces, d.model.fn);
+    EXPECT_EQ(d.buckets.faces(), d.model.fn);
+    const auto where = d.bucketsOfPart();
+    EXPECT_EQ(int(where.size()), d.copyPart + 1);
+    for (const auto& [part, buckets] : where)
+        EXPECT_EQ(buckets.size(), 1u) << "part " << part;  // each part here is one component
+    EXPECT_EQ(where.at(d.chipPart), where.at(d.copyPart));
+
+    // Dealt by size: no bucket but the board's more than twice as heavy as an even share
+    // of the rest.
+    const auto boardBucket = *where.at(0).begin();
+    const int rest = d.model.fn - d.meshes[boardBucket].fn;
+    for (std::size_t i = 0; i < d.meshes.size(); ++i)
+        if (i != boardBucket)
+            EXPECT_LE(d.meshes[i].fn, 2 * rest / int(kMaxCollapseBuckets - 1)) << "bucket " << i;
+
+    TestMesh all;
+    d.buckets.appendTo(all);
+    EXPECT_EQ(all.fn, d.model.fn);
+    EXPECT_TRUE(hasParts(all));
+}
+
+TEST(CollapseBuckets, OnlyTheModelsLargestComponentAndTouchingOnesAreNeverRemovedWhole)
+{
+    Dealt d;
+    // A bound far above the model's size: every removal is within it.
+    d.buckets.collapse(10 * liveDiagonal(d.model), runOnTwoThreads);
+    TestMesh all;
+    d.buckets.appendTo(all);
+    vcg::tri::UpdateTopology<TestMesh>::VertexFace(all);
+    std::set<int> partsLeft;
+    auto part = facePartHandle(all);
+    for (const auto& c : connectedComponents(all))
+        partsLeft.insert(part[c.faces.front()]);
+    EXPECT_EQ(partsLeft, (std::set<int>{0, d.chipPart, d.copyPart}));  // the board, the touching pair
+    SimplifyStats stats;
+    d.buckets.addStatsTo(stats);
+    EXPECT_EQ(stats.removedComponents, d.copyPart - 2);  // every other part
+    d.buckets.release();
+}
