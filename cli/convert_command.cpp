@@ -82,6 +82,7 @@ LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& s
     o.levels = a.lod;
     o.view = viewOf(a);
     o.fromOriginal = a.fromOriginal;
+    o.runTogether = [](const Task& x, const Task& y) { tbb::parallel_invoke(x, y); };
     o.hausdorffSamples = a.samples;
     applyProtection(a.protection, o.simplify);
     return buildLodSet<CoreMesh>(original, o, newLevel, progress::callback);

@@ -194,6 +194,7 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
     } else {
         LodSetOptions options = readListOptions(par);
         options.setId = setId;
+        options.runTogether = runOnTwoThreads;
         result = buildLodSet<CMeshO>(level0->cm, options, newLevel, cb);
     }
     if (!result.ok()) {

@@ -9,6 +9,7 @@
 #include "hausdorff.h"
 #include "layer_metadata.h"
 #include "lod_plan.h"
+#include "run_together.h"
 #include "simplify.h"
 
 #include <vcg/complex/append.h>
@@ -27,6 +28,7 @@ struct LodSetOptions {
     std::size_t hausdorffSamples = 0;   // face samples per side; 0: as many as level-0 faces
     SimplifyParams simplify;            // stop criteria are set per level
     int setId = 1;
+    RunTogether runTogether;            // measuring a level beside simplifying the next; empty: in sequence
 };
 
 struct LodSetResult {
@@ -121,30 +123,19 @@ LodSetResult buildLodSet(MeshType& original, const LodSetOptions& options,
     result.levels.push_back(level0);
     result.compactness.push_back(meshCompactness(original));
 
+    // Level k is measured while level k+1 is simplified (from a copy of it, or of the
+    // original): the two share nothing mutable.
+    const RunTogether together = options.runTogether ? options.runTogether : RunTogether(runInSequence);
     const int count = int(plan.targetFaces.size());
-    for (int k = 1; k <= count; ++k) {
-        MeshType& base = options.fromOriginal ? original : *meshes.back();
-        MeshType& mesh = newLevel(k);
-        detail::copyWithParts(mesh, base);
-        vcg::tri::Allocator<MeshType>::CompactEveryVector(mesh);
-
-        SimplifyParams params = options.simplify;
-        params.targetFaces = plan.targetFaces[k - 1];
-        params.reductionPerc = 0.0;
-        params.maxError = 0.0;
-        if (progress)
-            progress(100 * (k - 1) / count, ("Simplifying level " + std::to_string(k)).c_str());
-        SimplifyStats stats = simplify(mesh, params, nullptr);
-        vcg::tri::Allocator<MeshType>::CompactEveryVector(mesh);
-        if (!stats.ok) {
-            result.error = "level " + std::to_string(k) + ": " + stats.message;
-            return result;
-        }
-        result.steps.push_back(stats);
-
-        if (progress)
-            progress(100 * (k - 1) / count + 50 / count, ("Measuring level " + std::to_string(k)).c_str());
-        const SymmetricHausdorff distance = symmetricHausdorff(original, mesh, samples);
+    SymmetricHausdorff distance;
+    CompactnessStats compactness;
+    auto measure = [&](MeshType& mesh) {
+        together([&] { distance.forward = oneSidedHausdorff(original, mesh, samples, 1, nullptr, together); },
+                 [&] { distance.backward = oneSidedHausdorff(mesh, original, samples, 2, nullptr, together); });
+        distance.diagonal = liveDiagonal(original);
+        compactness = meshCompactness(mesh);
+    };
+    auto addLevel = [&](MeshType& mesh, int k) {
         LodLevel level = level0;
         level.level = k;
         level.faces = mesh.fn;
@@ -153,8 +144,37 @@ LodSetResult buildLodSet(MeshType& original, const LodSetOptions& options,
         level.hausdorffMean = distance.mean();
         result.levels.push_back(level);
         result.distance.push_back(distance);
-        result.compactness.push_back(meshCompactness(mesh));
-        meshes.push_back(&mesh);
+        result.compactness.push_back(compactness);
+    };
+    for (int k = 1; k <= count + 1; ++k) {
+        MeshType* previous = k > 1 ? meshes.back() : nullptr;  // made, not yet measured
+        MeshType* mesh = nullptr;
+        SimplifyStats stats;
+        if (k <= count) {
+            mesh = &newLevel(k);
+            detail::copyWithParts(*mesh, options.fromOriginal ? original : *meshes.back());
+            vcg::tri::Allocator<MeshType>::CompactEveryVector(*mesh);
+        }
+        SimplifyParams params = options.simplify;
+        params.targetFaces = k <= count ? plan.targetFaces[std::size_t(k - 1)] : 0;
+        params.reductionPerc = 0.0;
+        params.maxError = 0.0;
+        if (progress)
+            progress(100 * (k - 1) / count, (k <= count ? "Simplifying level " + std::to_string(k)
+                                                          : "Measuring level " + std::to_string(count)).c_str());
+        together([&] { if (previous) measure(*previous); },
+                 [&] { if (mesh) stats = simplify(*mesh, params, nullptr); });
+        if (previous)
+            addLevel(*previous, k - 1);
+        if (!mesh)
+            break;
+        vcg::tri::Allocator<MeshType>::CompactEveryVector(*mesh);
+        if (!stats.ok) {
+            result.error = "level " + std::to_string(k) + ": " + stats.message;
+            return result;
+        }
+        result.steps.push_back(stats);
+        meshes.push_back(mesh);
     }
 
     detail::keepUsefulLevels(result, meshes);
