@@ -34,8 +34,8 @@ best_ms() {
 
 faces() { "$cadlod" info "$1" 2>/dev/null | awk '/^triangles/{print $2}'; }
 
-echo "| input | triangles | meshlabserver, list (ms) | cadlod, list (ms) | cadlod --lod auto (ms) | auto, 1 thread (ms) | auto, 2 threads (ms) |"
-echo "|---|---:|---:|---:|---:|---:|---:|"
+echo "| input | triangles | meshlabserver, list (ms) | cadlod, list (ms) | cadlod --lod auto (ms) | auto, 1 thread (ms) | auto, 2 threads (ms) | speed-up |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|"
 for in in "${inputs[@]}"; do
   out="$work/out.flt"
   ms_server=$(best_ms xvfb-run -a timeout 1800 "$server" -i "$in" -s "$ROOT/docs/examples/cad_mm_to_flt.mlx" -o "$out")
@@ -44,7 +44,8 @@ for in in "${inputs[@]}"; do
   ms_t1=$(best_ms env -u DISPLAY "$cadlod" convert "$in" -o "$out" --unit mm -q --threads 1)
   ms_t2=$(best_ms env -u DISPLAY "$cadlod" convert "$in" -o "$out" --unit mm -q --threads 2)
   "$cadlod" convert "$in" -o "$out" --unit mm -q --lod 90 --force >/dev/null 2>&1
-  echo "| $(basename "$in") | $(faces "$out") | $ms_server | $ms_list | $ms_auto | $ms_t1 | $ms_t2 |"
+  speedup=$(awk -v a="$ms_t1" -v b="$ms_t2" 'BEGIN { printf "%.2f", a / b }')
+  echo "| $(basename "$in") | $(faces "$out") | $ms_server | $ms_list | $ms_auto | $ms_t1 | $ms_t2 | **$speedup** |"
 done
 echo
 echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs); load $(cut -d' ' -f1-3 /proc/loadavg)"

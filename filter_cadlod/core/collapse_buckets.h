@@ -44,9 +44,11 @@ public:
     CollapseBuckets& operator=(const CollapseBuckets&) = delete;
     ~CollapseBuckets() { release(); }
 
-    // Deals the faces of `model` into buckets and prepares a session on each. `model` is
-    // left with its selection cleared. False (with `error`) if the model has no extent.
-    bool prepare(MeshType& model, const SimplifyParams& params, std::string& error)
+    // Deals the faces of `model` into buckets and prepares a session on each (side by
+    // side, through `together`). `model` is left with its selection cleared. False (with
+    // `error`) if the model has no extent.
+    bool prepare(MeshType& model, const SimplifyParams& params, std::string& error,
+                 const RunTogether& together = runInSequence)
     {
         const double diagonal = detail::finiteFaceDiagonal(model);
         if (!(diagonal > 0)) {
@@ -65,8 +67,9 @@ public:
             Bucket& b = buckets_.emplace_back(newMesh_());
             copyFaces(model, faces, b.mesh);
             b.ctx.mayRemoveLargestComponent = !std::binary_search(faces.begin(), faces.end(), largestFace);
-            b.ready = prepareCollapse(b.mesh, params, b.ctx, b.stats, &bits_, diagonal);
         }
+        forEachBucket(0, buckets_.size(), together,
+                      [&](Bucket& b) { b.ready = prepareCollapse(b.mesh, params, b.ctx, b.stats, &bits_, diagonal); });
         return true;
     }
 
@@ -78,7 +81,10 @@ public:
             b.stats.targetFaces = 0;
             b.stats.errorBound = maxErrorAbs;
         }
-        collapseRange(0, buckets_.size(), together);
+        forEachBucket(0, buckets_.size(), together, [](Bucket& b) {
+            if (b.ready)
+                collapseToTarget(b.mesh, b.ctx, b.stats, nullptr);
+        });
     }
 
     int faces() const
@@ -158,16 +164,18 @@ private:
         bool ready = false;
     };
 
-    void collapseRange(std::size_t begin, std::size_t end, const RunTogether& together)
+    template <class Work>
+    void forEachBucket(std::size_t begin, std::size_t end, const RunTogether& together, const Work& work)
     {
         if (end - begin == 1) {
-            Bucket& b = buckets_[begin];
-            if (b.ready)
-                collapseToTarget(b.mesh, b.ctx, b.stats, nullptr);
+            work(buckets_[begin]);
             return;
         }
+        if (end == begin)
+            return;
         const std::size_t middle = begin + (end - begin) / 2;
-        together([&] { collapseRange(begin, middle, together); }, [&] { collapseRange(middle, end, together); });
+        together([&] { forEachBucket(begin, middle, together, work); },
+                 [&] { forEachBucket(middle, end, together, work); });
     }
 
     // Face indices of `model` per bucket: groups of touching components, largest first, each

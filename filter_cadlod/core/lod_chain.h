@@ -172,8 +172,10 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         SymmetricHausdorff& h = m.distance;
         const std::size_t backwardSamples = std::min(samples, kBackwardSamplesPerFace * std::size_t(mesh.fn));
         together([&] { h.forward = distancesToSurface(originalSamples, detail::ClosestFace<MeshType>(mesh), nullptr, together); },
-                 [&] { m.compactness = meshCompactness(mesh); });
-        h.backward = oneSidedHausdorff(mesh, *toOriginal, backwardSamples, 2, nullptr, together);
+                 [&] {
+                     together([&] { h.backward = oneSidedHausdorff(mesh, *toOriginal, backwardSamples, 2, nullptr, together); },
+                              [&] { m.compactness = meshCompactness(mesh); });
+                 });
         h.diagonal = result.modelSize;
         return m;
     };
@@ -208,7 +210,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         return result;
     }
     CollapseBuckets<MeshType> pieces(newScratch);
-    if (!pieces.prepare(working, params, why)) {
+    if (!pieces.prepare(working, params, why, together)) {
         result.error = why;
         return result;
     }
