@@ -130,6 +130,8 @@ int main(int argc, char** argv)
     int assemblySegments = 0;
     int shaftTriangles = 0;
     std::size_t samples = 0;
+    bool withMeshopt = true;  // its chain takes minutes on a 1M-triangle shaft
+    bool twoThreads = false;  // cadlod's chain measures and collapses side by side (the 90 % run stays on one)
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--plot") && i + 1 < argc)
             plotDir = argv[++i];
@@ -139,9 +141,13 @@ int main(int argc, char** argv)
             shaftTriangles = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--samples") && i + 1 < argc)
             samples = std::size_t(std::atol(argv[++i]));
+        else if (!std::strcmp(argv[i], "--no-meshopt"))
+            withMeshopt = false;
+        else if (!std::strcmp(argv[i], "--two-threads"))
+            twoThreads = true;
         else if (argv[i][0] == '-') {
             std::fprintf(stderr, "usage: chain_bench [--assembly-segments N] [--shaft TRIANGLES] [--plot DIR] "
-                                 "[--samples N] FILE...\n");
+                                 "[--samples N] [--no-meshopt] [--two-threads] FILE...\n");
             return 2;
         } else
             files.push_back(argv[i]);
@@ -149,6 +155,8 @@ int main(int argc, char** argv)
 
     LodChainOptions options;
     options.hausdorffSamples = samples;
+    if (twoThreads)
+        options.runTogether = runOnTwoThreads;
     std::printf("Camera: %.0f deg vertical field of view, %.0f px, %.1f px error. Path: camera backing away from 1x "
                 "to 1000x the diagonal (300 log-spaced distances); scene: objects on a disc of 1000x the diagonal.\n\n",
                 options.view.fovYDegrees, options.view.viewportHeightPx, options.view.pixelThreshold);
@@ -160,12 +168,15 @@ int main(int argc, char** argv)
         const std::size_t meshoptSamples = samples ? samples : std::min<std::size_t>(input.fn, 2000000);
         const double single = ninetyPercentSeconds(input);
         const Chain ours = cadlodChain(input, options);
-        const Chain theirs = meshoptChain(input, options.view, meshoptSamples);
         const bench::ChainFigures a = bench::chainFigures(ours.levels, diagonal, options.view);
-        const bench::ChainFigures b = bench::chainFigures(theirs.levels, diagonal, options.view);
         std::printf("| %s | %d | cadlod | %zu | %s | %.3f%% | %.3f%% | %.2f | %.2f | %.2f |\n", name.c_str(), input.fn,
                     ours.levels.size(), levelList(ours.levels).c_str(), 100 * a.pathShare, 100 * a.sceneShare,
                     a.worstPixels, ours.seconds, ours.seconds / single);
+        std::fflush(stdout);
+        if (!withMeshopt)
+            return;
+        const Chain theirs = meshoptChain(input, options.view, meshoptSamples);
+        const bench::ChainFigures b = bench::chainFigures(theirs.levels, diagonal, options.view);
         std::printf("| | | meshopt | %zu | %s | %.3f%% | %.3f%% | %.2f | %.2f | |\n", theirs.levels.size(),
                     levelList(theirs.levels).c_str(), 100 * b.pathShare, 100 * b.sceneShare, b.worstPixels,
                     theirs.seconds);
