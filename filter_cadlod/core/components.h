@@ -180,4 +180,44 @@ void appendBox(MeshType& m, const vcg::Box3d& box, int part, const vcg::Color4b&
         }
 }
 
+// The tetrahedron inscribed in an axis-aligned box (four of its corners, no two on one
+// edge), outward facing, appended to `m` as part `part` with the given face colour.
+template <class MeshType>
+void appendTetrahedron(MeshType& m, const vcg::Box3d& box, int part, const vcg::Color4b& color)
+{
+    using CoordType = typename MeshType::CoordType;
+    // Corners numbered by bits (x, y, z): 0, 3, 5 and 6 differ pairwise in two bits.
+    const int corners[4] = {0, 3, 5, 6};
+    auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, 4);
+    typename MeshType::VertexPointer v[4];
+    for (int k = 0; k < 4; ++k, ++vi) {
+        const int c = corners[k];
+        vi->P() = CoordType::Construct(vcg::Point3d(c & 1 ? box.max[0] : box.min[0], c & 2 ? box.max[1] : box.min[1],
+                                                    c & 4 ? box.max[2] : box.min[2]));
+        v[k] = &*vi;
+    }
+    auto fi = vcg::tri::Allocator<MeshType>::AddFaces(m, 4);
+    const bool parts = vcg::tri::HasPerFaceAttribute(m, kPartAttribute);
+    const bool colors = vcg::tri::HasPerFaceColor(m);
+    typename MeshType::template PerFaceAttributeHandle<int> partOf;
+    if (parts)
+        partOf = facePartHandle(m);
+    for (int opposite = 0; opposite < 4; ++opposite, ++fi) {
+        int f[3], n = 0;
+        for (int k = 0; k < 4; ++k)
+            if (k != opposite)
+                f[n++] = k;
+        // Outward: the fourth corner lies behind the face.
+        const auto a = v[f[0]]->cP(), b = v[f[1]]->cP(), c = v[f[2]]->cP();
+        if (((b - a) ^ (c - a)).dot(v[opposite]->cP() - a) > 0)
+            std::swap(f[1], f[2]);
+        for (int j = 0; j < 3; ++j)
+            fi->V(j) = v[f[j]];
+        if (colors)
+            fi->C() = color;
+        if (parts)
+            partOf[fi] = part;
+    }
+}
+
 }  // namespace cadlod

@@ -48,6 +48,8 @@ struct LodChainOptions {
     RunTogether runTogether;          // measuring a level beside the next collapses; empty: in sequence
 };
 
+// Where the model is this many pixels high, a tetrahedron per component replaces its box.
+inline constexpr double kTetrahedronPixels = 2.0;
 // Switch-in distance of the last level when the model is never culled.
 inline constexpr double kNeverCulled = 1e30;
 // The first level is planned this many times closer than where the model fills the view.
@@ -74,10 +76,11 @@ inline double distanceForPixels(double size, double pixels, const ViewParams& vi
     return size * view.viewportHeightPx / (2.0 * tanHalfFov(view) * pixels);
 }
 
-// Replaces `m` by one box per connected component at least `minSize` large, keeping each
-// one's part and colour; the smaller ones are left out, counted in `stats`.
-template <class MeshType>
-void boxProxy(MeshType& m, double minSize, SimplifyStats& stats)
+// Replaces `m` by one closed shape per connected component at least `minSize` large,
+// `append(m, box, part, colour)` making it from the component's box and keeping its part
+// and colour; the smaller ones are left out, counted in `stats`.
+template <class MeshType, class AppendShape>
+void proxyPerComponent(MeshType& m, double minSize, SimplifyStats& stats, const AppendShape& append)
 {
     struct Box {
         vcg::Box3d box;
@@ -108,7 +111,7 @@ void boxProxy(MeshType& m, double minSize, SimplifyStats& stats)
             vcg::tri::Allocator<MeshType>::DeleteVertex(m, v);
     vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
     for (const Box& b : boxes)
-        appendBox(m, b.box, b.part, b.color);
+        append(m, b.box, b.part, b.color);
 }
 
 }  // namespace detail
@@ -278,20 +281,32 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     }
     pieces.release();
 
-    // The proxy, when it is lighter than the last level.
+    // The proxies, each when it is lighter than the last level: a box per component where
+    // the model is proxyPixels high, then, where it is a couple of pixels high, the
+    // tetrahedron inscribed in each box (the fewest triangles that still enclose a volume).
     pieces.appendTo(working);
-    stats.errorBound = detail::errorBudgetAt(dProxy, view);
-    together(measurePending, [&] { detail::boxProxy(working, stats.errorBound, stats); });
-    settlePending();
-    if (working.fn > 0 && working.fn < result.levels.back().faces) {
+    auto addProxy = [&](const std::string& what, int facesEach) {
+        if (working.fn == 0 || working.fn >= result.levels.back().faces)
+            return;
         if (progress)
-            progress(100 * plannedLevels / (plannedLevels + 1), "Measuring the box proxy");
+            progress(100 * plannedLevels / (plannedLevels + 1), ("Measuring the " + what + " proxy").c_str());
         MeshType& proxy = newLevel(int(result.levels.size()));
         detail::copyWithParts(proxy, working);
         stats.facesAfter = proxy.fn;
-        stats.relaxed.push_back("box proxy: one box per connected component (" + std::to_string(proxy.fn / 12) +
-                                " boxes)");
+        stats.relaxed.push_back(what + " proxy: one " + what + " per connected component (" +
+                                std::to_string(proxy.fn / facesEach) + ")");
         addLevel(proxy, stats, measure(proxy));
+    };
+    stats.errorBound = detail::errorBudgetAt(dProxy, view);
+    together(measurePending, [&] { detail::proxyPerComponent(working, stats.errorBound, stats, appendBox<MeshType>); });
+    settlePending();
+    addProxy("box", 12);
+    if (options.proxyPixels > kTetrahedronPixels) {
+        stats.relaxed.clear();
+        stats.errorBound =
+            detail::errorBudgetAt(detail::distanceForPixels(result.modelSize, kTetrahedronPixels, view), view);
+        detail::proxyPerComponent(working, stats.errorBound, stats, appendTetrahedron<MeshType>);
+        addProxy("tetrahedron", 4);
     }
 
     detail::keepUsefulLevels(result, meshes);

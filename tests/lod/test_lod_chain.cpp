@@ -145,6 +145,33 @@ TEST(LodChain, MeasuringBesideTheCollapsesOnTwoThreadsGivesTheSameChain)
     }
 }
 
+TEST(LodChain, TheFarthestLevelIsAnOutwardTetrahedronPerComponent)
+{
+    Chain c(assemblyBuilder());
+    ASSERT_TRUE(c.result.ok()) << c.result.error;
+    TestMesh& last = c.level(c.result.levels.size() - 1);
+    vcg::tri::UpdateTopology<TestMesh>::VertexFace(last);
+    const auto components = connectedComponents(last);
+    ASSERT_FALSE(components.empty());
+    EXPECT_EQ(last.fn, 4 * int(components.size()));
+    for (const auto& component : components) {
+        ASSERT_EQ(component.faces.size(), 4u);
+        // Closed and outward: the signed volume (sum over faces of a . (b x c) / 6) is that
+        // of the tetrahedron inscribed in the component's box, a third of the box's.
+        double volume = 0;
+        for (const auto* f : component.faces) {
+            const vcg::Point3d a = vcg::Point3d::Construct(f->cP(0)), b = vcg::Point3d::Construct(f->cP(1)),
+                               d = vcg::Point3d::Construct(f->cP(2));
+            volume += a.dot(b ^ d) / 6.0;
+        }
+        const vcg::Point3d e = component.box.Dim();
+        EXPECT_NEAR(volume, e[0] * e[1] * e[2] / 3.0, 1e-6 * e[0] * e[1] * e[2]);
+    }
+    // It serves from where the model is a few pixels high, not before.
+    const double d = c.result.levels.back().switchOut;
+    EXPECT_LE(projectedPixels(c.result.modelSize, d, LodChainOptions().view), 8.0 + 1e-9);
+}
+
 TEST(LodChain, BadCameraIsAClearError)
 {
     LodChainOptions options;
