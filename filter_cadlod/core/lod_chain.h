@@ -16,7 +16,9 @@
 // error steers the budgets from the level after next, so a collapse error that
 // underestimates the distance a viewer sees is corrected level by level. When the next
 // distance passes the point where the model is `proxyPixels` high, the chain ends with a
-// proxy: one axis-aligned box per remaining connected component (a box per part).
+// proxy: one axis-aligned box per remaining connected component (a box per part); where the
+// model is a couple of pixels high, the tetrahedron inscribed in each box, and last one
+// tetrahedron for the whole model.
 //
 // Every level's range comes from its measured error (lod_plan.h): it is drawn from where
 // that error projects to the pixel error, until the next level's does. The last level is
@@ -112,6 +114,29 @@ void proxyPerComponent(MeshType& m, double minSize, SimplifyStats& stats, const 
     vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
     for (const Box& b : boxes)
         append(m, b.box, b.part, b.color);
+}
+
+// Replaces `m` by one closed shape made from the box of all its live vertices, with the
+// part and colour of its largest component.
+template <class MeshType, class AppendShape>
+void oneProxy(MeshType& m, const AppendShape& append)
+{
+    vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+    const auto components = connectedComponents(m);
+    if (components.empty())
+        return;
+    const auto* largest = components.back().faces.front();
+    const int part = hasParts(m) ? facePartHandle(m)[largest] : 0;
+    const vcg::Color4b color = vcg::tri::HasPerFaceColor(m) ? largest->cC() : vcg::Color4b(vcg::Color4b::Gray);
+    const vcg::Box3d box = liveVertexBox(m);
+    for (auto& f : m.face)
+        if (!f.IsD())
+            vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
+    for (auto& v : m.vert)
+        if (!v.IsD())
+            vcg::tri::Allocator<MeshType>::DeleteVertex(m, v);
+    vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
+    append(m, box, part, color);
 }
 
 }  // namespace detail
@@ -283,7 +308,9 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
 
     // The proxies, each when it is lighter than the last level: a box per component where
     // the model is proxyPixels high, then, where it is a couple of pixels high, the
-    // tetrahedron inscribed in each box (the fewest triangles that still enclose a volume).
+    // tetrahedron inscribed in each box (the fewest triangles that still enclose a volume),
+    // and then one for the whole model. Each is drawn from where its measured error is
+    // within the pixel error, like any level.
     pieces.appendTo(working);
     auto addProxy = [&](const std::string& what, int facesEach) {
         if (working.fn == 0 || working.fn >= result.levels.back().faces)
@@ -307,6 +334,12 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
             detail::errorBudgetAt(detail::distanceForPixels(result.modelSize, kTetrahedronPixels, view), view);
         detail::proxyPerComponent(working, stats.errorBound, stats, appendTetrahedron<MeshType>);
         addProxy("tetrahedron", 4);
+        // Last, where the whole model is about that size: one tetrahedron for all of it.
+        if (working.fn > 4) {
+            stats.relaxed.clear();
+            detail::oneProxy(working, appendTetrahedron<MeshType>);
+            addProxy("model tetrahedron", 4);
+        }
     }
 
     detail::keepUsefulLevels(result, meshes);

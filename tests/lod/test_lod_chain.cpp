@@ -145,7 +145,7 @@ TEST(LodChain, MeasuringBesideTheCollapsesOnTwoThreadsGivesTheSameChain)
     }
 }
 
-TEST(LodChain, TheFarthestLevelIsAnOutwardTetrahedronPerComponent)
+TEST(LodChain, TheFarthestLevelIsOutwardTetrahedra)
 {
     Chain c(assemblyBuilder());
     ASSERT_TRUE(c.result.ok()) << c.result.error;
