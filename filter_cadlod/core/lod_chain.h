@@ -116,19 +116,35 @@ void proxyPerComponent(MeshType& m, double minSize, SimplifyStats& stats, const 
         append(m, b.box, b.part, b.color);
 }
 
-// Replaces `m` by one closed shape made from the box of all its live vertices, with the
-// part and colour of its largest component.
-template <class MeshType, class AppendShape>
-void oneProxy(MeshType& m, const AppendShape& append)
+// The box of all of a model's live vertices, with the part and colour of its largest
+// component: what one proxy for the whole model is made from.
+struct ModelBox {
+    vcg::Box3d box;
+    int part = 0;
+    vcg::Color4b color = vcg::Color4b(vcg::Color4b::Gray);
+};
+
+template <class MeshType>
+ModelBox modelBox(MeshType& m)
 {
+    ModelBox b;
+    b.box = liveVertexBox(m);
     vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
     const auto components = connectedComponents(m);
     if (components.empty())
-        return;
+        return b;
     const auto* largest = components.back().faces.front();
-    const int part = hasParts(m) ? facePartHandle(m)[largest] : 0;
-    const vcg::Color4b color = vcg::tri::HasPerFaceColor(m) ? largest->cC() : vcg::Color4b(vcg::Color4b::Gray);
-    const vcg::Box3d box = liveVertexBox(m);
+    if (hasParts(m))
+        b.part = facePartHandle(m)[largest];
+    if (vcg::tri::HasPerFaceColor(m))
+        b.color = largest->cC();
+    return b;
+}
+
+// Replaces `m` by one closed shape made from `b`.
+template <class MeshType, class AppendShape>
+void oneProxy(MeshType& m, const ModelBox& b, const AppendShape& append)
+{
     for (auto& f : m.face)
         if (!f.IsD())
             vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
@@ -136,7 +152,7 @@ void oneProxy(MeshType& m, const AppendShape& append)
         if (!v.IsD())
             vcg::tri::Allocator<MeshType>::DeleteVertex(m, v);
     vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
-    append(m, box, part, color);
+    append(m, b.box, b.part, b.color);
 }
 
 }  // namespace detail
@@ -332,12 +348,13 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         stats.relaxed.clear();
         stats.errorBound =
             detail::errorBudgetAt(detail::distanceForPixels(result.modelSize, kTetrahedronPixels, view), view);
+        const detail::ModelBox whole = detail::modelBox(working);
         detail::proxyPerComponent(working, stats.errorBound, stats, appendTetrahedron<MeshType>);
         addProxy("tetrahedron", 4);
-        // Last, where the whole model is about that size: one tetrahedron for all of it.
-        if (working.fn > 4) {
+        // Last, one tetrahedron for all of it (also when every part was below the budget).
+        if (working.fn != 4 && !whole.box.IsNull()) {
             stats.relaxed.clear();
-            detail::oneProxy(working, appendTetrahedron<MeshType>);
+            detail::oneProxy(working, whole, appendTetrahedron<MeshType>);
             addProxy("model tetrahedron", 4);
         }
     }
