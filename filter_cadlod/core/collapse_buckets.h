@@ -109,18 +109,8 @@ public:
     {
         for (Bucket& b : buckets_) {
             const SimplifyStats& s = b.stats;
-            total.featureEdges += s.featureEdges - b.reported.featureEdges;
-            total.boundaryEdges += s.boundaryEdges - b.reported.boundaryEdges;
-            total.nonManifoldEdges += s.nonManifoldEdges - b.reported.nonManifoldEdges;
-            total.degenerateFaces += s.degenerateFaces - b.reported.degenerateFaces;
-            total.collapses += s.collapses - b.reported.collapses;
-            total.rejectedFlip += s.rejectedFlip - b.reported.rejectedFlip;
-            total.rejectedCompactness += s.rejectedCompactness - b.reported.rejectedCompactness;
-            total.rejectedFeature += s.rejectedFeature - b.reported.rejectedFeature;
-            total.rejectedError += s.rejectedError - b.reported.rejectedError;
-            total.rejectedTopology += s.rejectedTopology - b.reported.rejectedTopology;
-            total.featureBreaks += s.featureBreaks - b.reported.featureBreaks;
-            total.removedComponents += s.removedComponents - b.reported.removedComponents;
+            for (int SimplifyStats::*count : kCounts)
+                total.*count += s.*count - b.reported.*count;
             total.largestRemovedComponent = std::max(total.largestRemovedComponent, s.largestRemovedComponent);
             total.relaxed.insert(total.relaxed.end(), s.relaxed.begin(), s.relaxed.end());
             b.stats.relaxed.clear();
@@ -155,6 +145,13 @@ public:
     }
 
 private:
+    // The statistics a session counts up, added over the buckets.
+    static constexpr int SimplifyStats::*kCounts[] = {
+        &SimplifyStats::featureEdges,        &SimplifyStats::boundaryEdges,     &SimplifyStats::nonManifoldEdges,
+        &SimplifyStats::degenerateFaces,     &SimplifyStats::collapses,         &SimplifyStats::rejectedFlip,
+        &SimplifyStats::rejectedCompactness, &SimplifyStats::rejectedFeature,   &SimplifyStats::rejectedError,
+        &SimplifyStats::rejectedTopology,    &SimplifyStats::featureBreaks,     &SimplifyStats::removedComponents};
+
     struct Bucket {
         explicit Bucket(MeshType& m) : mesh(m) {}
         MeshType& mesh;

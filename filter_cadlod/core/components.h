@@ -130,6 +130,19 @@ std::vector<int> touchGroups(MeshType& m, const std::vector<Component<MeshType>>
     return group;
 }
 
+// Deletes every face and vertex of `m` (its attributes stay) and compacts it.
+template <class MeshType>
+void deleteEverything(MeshType& m)
+{
+    for (auto& f : m.face)
+        if (!f.IsD())
+            vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
+    for (auto& v : m.vert)
+        if (!v.IsD())
+            vcg::tri::Allocator<MeshType>::DeleteVertex(m, v);
+    vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
+}
+
 // Deletes the component's faces and the vertices they use (no other live face uses them).
 template <class MeshType>
 void removeComponent(MeshType& m, const Component<MeshType>& c)

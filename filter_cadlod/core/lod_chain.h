@@ -105,13 +105,7 @@ void proxyPerComponent(MeshType& m, double minSize, SimplifyStats& stats, const 
         boxes.push_back({c.box, parts ? partOf[first] : 0,
                          vcg::tri::HasPerFaceColor(m) ? first->cC() : vcg::Color4b(vcg::Color4b::Gray)});
     }
-    for (auto& f : m.face)
-        if (!f.IsD())
-            vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
-    for (auto& v : m.vert)
-        if (!v.IsD())
-            vcg::tri::Allocator<MeshType>::DeleteVertex(m, v);
-    vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
+    deleteEverything(m);
     for (const Box& b : boxes)
         append(m, b.box, b.part, b.color);
 }
@@ -145,13 +139,7 @@ ModelBox modelBox(MeshType& m)
 template <class MeshType, class AppendShape>
 void oneProxy(MeshType& m, const ModelBox& b, const AppendShape& append)
 {
-    for (auto& f : m.face)
-        if (!f.IsD())
-            vcg::tri::Allocator<MeshType>::DeleteFace(m, f);
-    for (auto& v : m.vert)
-        if (!v.IsD())
-            vcg::tri::Allocator<MeshType>::DeleteVertex(m, v);
-    vcg::tri::Allocator<MeshType>::CompactEveryVector(m);
+    deleteEverything(m);
     append(m, b.box, b.part, b.color);
 }
 
