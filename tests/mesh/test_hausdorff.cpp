@@ -103,7 +103,7 @@ TEST(ClosestFace, HausdorffOfAMeshJustLargerThanTheOtherIsItsOffset)
     EXPECT_NEAR(h.max, 0.001 * 7.3, 1e-4);
 }
 
-TEST(Hausdorff, MeasuredInQuartersOnTwoThreadsItGivesTheSameFigures)
+TEST(Hausdorff, MeasuredInChunksOnTwoThreadsItGivesTheSameFigures)
 {
     TestMesh inner, outer;
     offsetSphere(inner);
@@ -115,7 +115,7 @@ TEST(Hausdorff, MeasuredInQuartersOnTwoThreadsItGivesTheSameFigures)
     const HausdorffStats whole = oneSidedHausdorff(outer, inner, 20000, 1, &wholeVertices);
     const HausdorffStats serial = oneSidedHausdorff(outer, inner, 20000, 1, &serialVertices, runInSequence);
     const HausdorffStats threaded = oneSidedHausdorff(outer, inner, 20000, 1, &threadedVertices, runOnTwoThreads);
-    // Quarters added in a fixed order: bit for bit the same however they ran.
+    // Chunks added in a fixed order: bit for bit the same however they ran.
     EXPECT_EQ(serial.max, threaded.max);
     EXPECT_EQ(serial.mean, threaded.mean);
     EXPECT_EQ(serial.rms, threaded.rms);
