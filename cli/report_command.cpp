@@ -44,7 +44,7 @@ void runReport(const ReportArgs& a)
     loadMesh(a.original, original, importing);
     loadMesh(a.simplified, simplified, importing);
     const SimplificationReport r = compareWithOriginal(original, simplified, a.samples, nullptr,
-                                                         [](auto&&... tasks) { tbb::parallel_invoke(tasks...); });
+                                                         [](const Task& x, const Task& y) { tbb::parallel_invoke(x, y); });
     if (a.json)
         std::cout << comparisonJson(r).dump(2) << "\n";
     else

@@ -15,6 +15,7 @@
 #include <vcg/complex/append.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,46 @@ struct LodSetResult {
     std::vector<int> droppedLevels;          // as numbered by newLevel(k)
     std::vector<std::string> warnings;       // why each dropped level was dropped
     bool ok() const { return error.empty(); }
+};
+
+// The symmetric Hausdorff distance of levels to level 0 (`original`). Level 0's sample
+// points and its index are made once for all levels: by prepare(), which a caller may run
+// beside other work, or by the first measure. `together` runs the two sides, and each
+// side's chunks, at once where it can (hausdorff.h: the figures do not depend on it).
+template <class MeshType>
+class DistanceToLevelZero
+{
+public:
+    DistanceToLevelZero(MeshType& original, std::size_t samples, double diagonal, RunTogether together)
+        : original_(original), samples_(samples), diagonal_(diagonal), together_(std::move(together))
+    {
+    }
+
+    void prepare()
+    {
+        if (!index_)
+            together_([&] { points_ = hausdorffSamples(original_, samples_, 1); },
+                      [&] { index_.emplace(original_); });
+    }
+
+    // `backwardSamples`: random points on the level (besides its vertices).
+    SymmetricHausdorff operator()(MeshType& level, std::size_t backwardSamples)
+    {
+        prepare();
+        SymmetricHausdorff h;
+        together_([&] { h.forward = distancesToSurface(points_, detail::ClosestFace<MeshType>(level), nullptr, together_); },
+                  [&] { h.backward = oneSidedHausdorff(level, *index_, backwardSamples, 2, nullptr, together_); });
+        h.diagonal = diagonal_;
+        return h;
+    }
+
+private:
+    MeshType& original_;
+    std::size_t samples_;
+    double diagonal_;
+    RunTogether together_;
+    HausdorffSamples points_;
+    std::optional<detail::ClosestFace<MeshType>> index_;
 };
 
 namespace detail {
@@ -127,12 +168,11 @@ LodSetResult buildLodSet(MeshType& original, const LodSetOptions& options,
     // original): the two share nothing mutable.
     const RunTogether together = options.runTogether ? options.runTogether : RunTogether(runInSequence);
     const int count = int(plan.targetFaces.size());
+    DistanceToLevelZero<MeshType> distanceToOriginal(original, samples, result.modelSize, together);
     SymmetricHausdorff distance;
     CompactnessStats compactness;
     auto measure = [&](MeshType& mesh) {
-        together([&] { distance.forward = oneSidedHausdorff(original, mesh, samples, 1, nullptr, together); },
-                 [&] { distance.backward = oneSidedHausdorff(mesh, original, samples, 2, nullptr, together); });
-        distance.diagonal = liveDiagonal(original);
+        distance = distanceToOriginal(mesh, samples);
         compactness = meshCompactness(mesh);
     };
     auto addLevel = [&](MeshType& mesh, int k) {

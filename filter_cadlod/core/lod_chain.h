@@ -33,7 +33,6 @@
 #include <cmath>
 #include <deque>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -78,69 +77,63 @@ inline double distanceForPixels(double size, double pixels, const ViewParams& vi
     return size * view.viewportHeightPx / (2.0 * tanHalfFov(view) * pixels);
 }
 
-// Replaces `m` by one closed shape per connected component at least `minSize` large,
-// `append(m, box, part, colour)` making it from the component's box and keeping its part
-// and colour; the smaller ones are left out, counted in `stats`.
+// What a proxy is made from: a box, and the part and colour of the faces it stands for.
+struct ProxyBox {
+    vcg::Box3d box;
+    int part = 0;
+    vcg::Color4b color = vcg::Color4b(vcg::Color4b::Gray);
+};
+
+// The part and colour of component `c`'s first face, with the box `box`.
+template <class MeshType>
+ProxyBox proxyBoxOf(MeshType& m, const Component<MeshType>& c, const vcg::Box3d& box)
+{
+    ProxyBox b;
+    b.box = box;
+    const auto* first = c.faces.front();
+    if (hasParts(m))
+        b.part = facePartHandle(m)[first];
+    if (vcg::tri::HasPerFaceColor(m))
+        b.color = first->cC();
+    return b;
+}
+
+// Replaces `m` by one closed shape per box, `append(m, box, part, colour)` making it.
+template <class MeshType, class AppendShape>
+void replaceByProxies(MeshType& m, const std::vector<ProxyBox>& boxes, const AppendShape& append)
+{
+    deleteEverything(m);
+    for (const ProxyBox& b : boxes)
+        append(m, b.box, b.part, b.color);
+}
+
+// Replaces `m` by one closed shape per connected component at least `minSize` large, made
+// from the component's box and keeping its part and colour; the smaller ones are left out,
+// counted in `stats`.
 template <class MeshType, class AppendShape>
 void proxyPerComponent(MeshType& m, double minSize, SimplifyStats& stats, const AppendShape& append)
 {
-    struct Box {
-        vcg::Box3d box;
-        int part;
-        vcg::Color4b color;
-    };
-    std::vector<Box> boxes;
+    std::vector<ProxyBox> boxes;
     vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
-    const bool parts = hasParts(m);
-    typename MeshType::template PerFaceAttributeHandle<int> partOf;
-    if (parts)
-        partOf = facePartHandle(m);
     for (const Component<MeshType>& c : connectedComponents(m)) {
         if (c.size() < minSize) {
             ++stats.removedComponents;
             stats.largestRemovedComponent = std::max(stats.largestRemovedComponent, c.size());
             continue;
         }
-        const auto* first = c.faces.front();
-        boxes.push_back({c.box, parts ? partOf[first] : 0,
-                         vcg::tri::HasPerFaceColor(m) ? first->cC() : vcg::Color4b(vcg::Color4b::Gray)});
+        boxes.push_back(proxyBoxOf(m, c, c.box));
     }
-    deleteEverything(m);
-    for (const Box& b : boxes)
-        append(m, b.box, b.part, b.color);
+    replaceByProxies(m, boxes, append);
 }
 
 // The box of all of a model's live vertices, with the part and colour of its largest
-// component: what one proxy for the whole model is made from.
-struct ModelBox {
-    vcg::Box3d box;
-    int part = 0;
-    vcg::Color4b color = vcg::Color4b(vcg::Color4b::Gray);
-};
-
+// component: what one proxy for the whole model is made from (null box: no faces).
 template <class MeshType>
-ModelBox modelBox(MeshType& m)
+ProxyBox modelBox(MeshType& m)
 {
-    ModelBox b;
-    b.box = liveVertexBox(m);
     vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
     const auto components = connectedComponents(m);
-    if (components.empty())
-        return b;
-    const auto* largest = components.back().faces.front();
-    if (hasParts(m))
-        b.part = facePartHandle(m)[largest];
-    if (vcg::tri::HasPerFaceColor(m))
-        b.color = largest->cC();
-    return b;
-}
-
-// Replaces `m` by one closed shape made from `b`.
-template <class MeshType, class AppendShape>
-void oneProxy(MeshType& m, const ModelBox& b, const AppendShape& append)
-{
-    deleteEverything(m);
-    append(m, b.box, b.part, b.color);
+    return components.empty() ? ProxyBox() : proxyBoxOf(m, components.back(), liveVertexBox(m));
 }
 
 }  // namespace detail
@@ -187,28 +180,18 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     const std::size_t samples =
         options.hausdorffSamples ? options.hausdorffSamples : std::clamp<std::size_t>(std::size_t(original.fn), 100000, 500000);
     const RunTogether together = options.runTogether ? options.runTogether : RunTogether(runInSequence);
-    // Level 0's points, and its index for the points of the coarser levels, made once
-    // (beside the first collapses, before anything is measured).
-    HausdorffSamples originalSamples;
-    std::optional<detail::ClosestFace<MeshType>> toOriginal;
-    auto indexOriginal = [&] {
-        together([&] { originalSamples = hausdorffSamples(original, samples, 1); },
-                 [&] { toOriginal.emplace(original); });
-    };
+    // Level 0's points and index are made beside the first collapses, before anything is
+    // measured.
+    DistanceToLevelZero<MeshType> distanceToOriginal(original, samples, result.modelSize, together);
     struct Measures {
         SymmetricHausdorff distance;
         CompactnessStats compactness;
     };
     auto measure = [&](MeshType& mesh) {
         Measures m;
-        SymmetricHausdorff& h = m.distance;
         const std::size_t backwardSamples = std::min(samples, kBackwardSamplesPerFace * std::size_t(mesh.fn));
-        together([&] { h.forward = distancesToSurface(originalSamples, detail::ClosestFace<MeshType>(mesh), nullptr, together); },
-                 [&] {
-                     together([&] { h.backward = oneSidedHausdorff(mesh, *toOriginal, backwardSamples, 2, nullptr, together); },
-                              [&] { m.compactness = meshCompactness(mesh); });
-                 });
-        h.diagonal = result.modelSize;
+        together([&] { m.distance = distanceToOriginal(mesh, backwardSamples); },
+                 [&] { m.compactness = meshCompactness(mesh); });
         return m;
     };
     auto addLevel = [&](MeshType& mesh, const SimplifyStats& stats, const Measures& measured) {
@@ -268,8 +251,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     };
     Pending pending;
     auto measurePending = [&] {
-        if (!toOriginal)
-            indexOriginal();
+        distanceToOriginal.prepare();
         if (pending.mesh)
             pending.measured = measure(*pending.mesh);
     };
@@ -336,13 +318,13 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         stats.relaxed.clear();
         stats.errorBound =
             detail::errorBudgetAt(detail::distanceForPixels(result.modelSize, kTetrahedronPixels, view), view);
-        const detail::ModelBox whole = detail::modelBox(working);
+        const detail::ProxyBox whole = detail::modelBox(working);
         detail::proxyPerComponent(working, stats.errorBound, stats, appendTetrahedron<MeshType>);
         addProxy("tetrahedron", 4);
         // Last, one tetrahedron for all of it (also when every part was below the budget).
         if (working.fn != 4 && !whole.box.IsNull()) {
             stats.relaxed.clear();
-            detail::oneProxy(working, whole, appendTetrahedron<MeshType>);
+            detail::replaceByProxies(working, {whole}, appendTetrahedron<MeshType>);
             addProxy("model tetrahedron", 4);
         }
     }

@@ -5,6 +5,7 @@
 
 #include "compactness.h"
 #include "hausdorff.h"
+#include "run_together.h"
 
 #include <array>
 #include <cstdio>
@@ -31,22 +32,14 @@ struct SimplificationReport {
     CompactnessHistogram histogramBefore{}, histogramAfter{};
 };
 
-// Runs independent tasks one after the other; compareWithOriginal's default.
-struct InSequence {
-    template <class... Task>
-    void operator()(Task&&... tasks) const
-    {
-        (tasks(), ...);
-    }
-};
-
 // `faceSamples` per direction (0: as many as the larger face count). `vertexDistance`, when
-// given, receives each vertex of `simplified`'s distance to `original`. `invoke` runs the four
-// independent measures (both Hausdorff directions, both compactness lists); a caller with a
-// thread pool passes e.g. tbb::parallel_invoke.
-template <class MeshType, class Invoke = InSequence>
+// given, receives each vertex of `simplified`'s distance to `original`. `together` runs the
+// four independent measures (both Hausdorff directions, both compactness lists) two by
+// two; a caller with a thread pool passes e.g. oneTBB's parallel_invoke.
+template <class MeshType>
 SimplificationReport compareWithOriginal(MeshType& original, MeshType& simplified, std::size_t faceSamples,
-                                         std::vector<double>* vertexDistance = nullptr, Invoke invoke = {})
+                                         std::vector<double>* vertexDistance = nullptr,
+                                         const RunTogether& together = runInSequence)
 {
     SimplificationReport r;
     r.facesBefore = original.fn;
@@ -55,9 +48,12 @@ SimplificationReport compareWithOriginal(MeshType& original, MeshType& simplifie
     r.verticesAfter = simplified.vn;
     const std::size_t samples = faceSamples ? faceSamples : std::size_t(std::max(original.fn, simplified.fn));
     std::vector<double> before, after;
-    invoke([&] { r.distance.forward = oneSidedHausdorff(original, simplified, samples, 1); },
-           [&] { r.distance.backward = oneSidedHausdorff(simplified, original, samples, 2, vertexDistance); },
-           [&] { before = faceCompactness(original); }, [&] { after = faceCompactness(simplified); });
+    together(
+        [&] {
+            together([&] { r.distance.forward = oneSidedHausdorff(original, simplified, samples, 1); },
+                     [&] { r.distance.backward = oneSidedHausdorff(simplified, original, samples, 2, vertexDistance); });
+        },
+        [&] { together([&] { before = faceCompactness(original); }, [&] { after = faceCompactness(simplified); }); });
     r.distance.diagonal = liveDiagonal(original);
     r.histogramBefore = histogramOf(before);
     r.histogramAfter = histogramOf(after);
