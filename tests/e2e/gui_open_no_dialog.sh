@@ -5,6 +5,7 @@
 # "degenerated faces. Corrected." warning (and the "Opening Problems" box) never shows.
 # Usage: gui_open_no_dialog.sh STAGED_MESHLAB DISPLAY_FILE
 set -uo pipefail
+. "$(dirname "$0")/gui_window.sh"
 meshlab=$1
 export DISPLAY=$(cat "$2")
 dir=$(mktemp -d)
@@ -17,20 +18,9 @@ WRL
 log="$dir/meshlab.log"
 LD_PRELOAD="${CADLOD_SANITIZER_PRELOAD:-}" "$meshlab" "$dir/rounded.wrl" >"$log" 2>&1 &
 pid=$!
-main=""
-for _ in $(seq 150); do
-  main=$(xdotool search --onlyvisible --name '^MeshLab' 2>/dev/null | head -n 1)
-  [ -n "$main" ] && break
-  kill -0 $pid 2>/dev/null || break
-  sleep 0.2
-done
+main=$(wait_for_window '^MeshLab' 150 $pid)
 # cadlod's own import options come first: accept them.
-options=""
-for _ in $(seq 50); do
-  options=$(xdotool search --onlyvisible --name '^Pre-Open Options' 2>/dev/null | head -n 1)
-  [ -n "$options" ] && break
-  sleep 0.2
-done
+options=$(wait_for_window '^Pre-Open Options' 50)
 if [ -n "$options" ]; then
   xdotool windowfocus --sync "$options" 2>/dev/null
   xdotool key --window "$options" Return

@@ -2,19 +2,14 @@
 # The staged MeshLab GUI starts on the test Xvfb with cadlod's plugins loaded, and no
 # plugin fails to load. Usage: gui_starts.sh STAGED_MESHLAB DISPLAY_FILE
 set -uo pipefail
+. "$(dirname "$0")/gui_window.sh"
 meshlab=$1
 export DISPLAY=$(cat "$2")
 xdotool getdisplaygeometry >/dev/null 2>&1 || { echo "FAIL: the test display $DISPLAY takes no clients"; exit 1; }
 log=$(mktemp)
 LD_PRELOAD="${CADLOD_SANITIZER_PRELOAD:-}" "$meshlab" >"$log" 2>&1 &
 pid=$!
-window=""
-for _ in $(seq 150); do
-  window=$(xdotool search --onlyvisible --name '^MeshLab' 2>/dev/null | head -n 1)
-  [ -n "$window" ] && break
-  kill -0 $pid 2>/dev/null || break
-  sleep 0.2
-done
+window=$(wait_for_window '^MeshLab' 150 $pid)
 sleep 1
 alive=0; kill -0 $pid 2>/dev/null && alive=1
 kill $pid 2>/dev/null; wait $pid 2>/dev/null
