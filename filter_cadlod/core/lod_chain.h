@@ -31,6 +31,7 @@
 #include "run_together.h"
 
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <memory>
 #include <string>
@@ -268,8 +269,11 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     int k = 0;
     for (double d = dFill / kCloseUpFactor; d < dProxy; d *= options.distanceRatio, ++k) {
         const double budget = detail::errorBudgetAt(d, view);
-        if (progress)
-            progress(100 * k / (plannedLevels + 1), ("Simplifying for " + std::to_string(d) + " units").c_str());
+        if (progress) {
+            char text[96];
+            std::snprintf(text, sizeof text, "Simplifying level %d, seen from %.3g model units", k + 1, d);
+            progress(100 * k / (plannedLevels + 1), text);
+        }
         const double bound = budget / hausdorffPerCollapseError;
         stats.targetFaces = 0;
         stats.errorBound = bound;
