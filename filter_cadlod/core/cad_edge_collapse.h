@@ -37,6 +37,7 @@
 #include "cad_quadrics.h"
 #include "compactness.h"
 #include "feature_edges.h"
+#include "input_surface.h"
 #include "simplify_params.h"
 
 #include <vcg/complex/algorithms/edge_collapse.h>
@@ -46,6 +47,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace cadlod {
@@ -90,6 +92,11 @@ struct CollapseContext : public vcg::BaseParameterClass {
     int& ringChanged(const VertexType* v) { return ringChangedAt[v - vertexBase]; }
     const VertexType* vertexBase = nullptr;
     std::vector<vcg::Point3f> inputNormal;  // per face index: unit normal in the input
+    // Collapses about to run are checked against the input surface: none may turn a face
+    // away from it (input_surface.h). Null: no check. Once relaxed (simplify.h), a collapse
+    // that does is ranked at facingPenalty times its error instead of refused.
+    std::shared_ptr<InputSurface> surface;
+    double facingPenalty = 0.0;
     const typename MeshType::FaceType* faceBase = nullptr;
 
     // Faces keep their identity through collapses (only a vertex is replaced), so the input
@@ -203,6 +210,18 @@ public:
             !vcg::tri::EdgeCollapser<MeshType, VertexPair>::LinkConditions(this->pos)) {
             ++ctx.stats->rejectedTopology;
             return false;
+        }
+        if (ctx.surface && !turnsAway_ && !free_ && !newFacesFaceTheInput(ctx)) {
+            if (ctx.facingPenalty <= 0) {
+                ++ctx.stats->rejectedFlip;
+                return false;
+            }
+            turnsAway_ = true;
+            this->_priority *= ScalarType(ctx.facingPenalty);
+            if (ctx.heap && !ctx.heap->empty() && this->_priority > ctx.heap->front().pri) {
+                requeue(*ctx.heap);
+                return false;
+            }
         }
         return true;
     }
@@ -318,6 +337,31 @@ private:
     {
         heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(a, b), static_cast<Context*>(pp)->mark, pp)));
         std::push_heap(heap.begin(), heap.end());
+    }
+
+    // Checked last, on the collapse about to run only: a closest-face search or two per new
+    // face are too dear for every evaluation (input_surface.h). Free collapses (within the
+    // flat floor) are not checked: they keep their faces on the input planes.
+    bool newFacesFaceTheInput(Context& ctx) const
+    {
+        const vcg::Point3d p = vcg::Point3d::Construct(target_);
+        for (const VertexType* v : {this->pos.cV(0), this->pos.cV(1)}) {
+            const VertexType* other = v == this->pos.cV(0) ? this->pos.cV(1) : this->pos.cV(0);
+            for (VFIterator vfi(const_cast<VertexType*>(v)); !vfi.End(); ++vfi) {
+                const FaceType* f = vfi.F();
+                const int z = vfi.I();
+                const VertexType* a = f->cV((z + 1) % 3);
+                const VertexType* b = f->cV((z + 2) % 3);
+                if (a == other || b == other)
+                    continue;  // vanishes with the edge
+                const vcg::Point3d pa = vcg::Point3d::Construct(a->cP()), pb = vcg::Point3d::Construct(b->cP());
+                const vcg::Point3d n = (pa - p) ^ (pb - p);
+                const double len = n.Norm();
+                if (!(len > 0) || !ctx.surface->facesAlong(std::size_t(f - ctx.faceBase), (p + pa + pb) / 3.0, n / len))
+                    return false;
+            }
+        }
+        return true;
     }
 
     static void markEdge(Context& ctx, VertexType* v, VertexType* x)
@@ -525,6 +569,7 @@ private:
     {
         evaluated_ = true;
         evaluatedAt_ = ctx.mark;
+        turnsAway_ = false;
         feasible_ = true;
         breaksFeature_ = false;
         VertexType* v0 = this->pos.V(0);
@@ -602,6 +647,7 @@ private:
         target_ = vcg::Point3<ScalarType>::Construct(cand[best].p);
         error_ = float(area > 0 ? std::sqrt(cost / area) : std::sqrt(cost));
         breaksFeature_ = cand[best].breaks;
+        free_ = cost <= flatFloor;
         if (ctx.maxErrorAbs > 0 && error_ > ctx.maxErrorAbs)
             return reject(stats.rejectedError);
         const double qualityThr = ctx.params.qualityThreshold;
@@ -614,6 +660,8 @@ private:
     bool feasible_ = true;
     bool breaksFeature_ = false;
     bool evaluated_ = false;
+    bool turnsAway_ = false;  // a new face would turn away from the input surface: priced (facingPenalty)
+    bool free_ = false;       // costs no more than the flat floor
     int evaluatedAt_ = 0;  // ctx.mark when evaluated
 };
 

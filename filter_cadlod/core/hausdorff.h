@@ -89,7 +89,7 @@ class ClosestFace
 public:
     using FaceType = typename MeshType::FaceType;
 
-    explicit ClosestFace(MeshType& m) : faces_(liveFaces(m)), tree_(triangles(faces_))
+    explicit ClosestFace(MeshType& m) : faces_(liveFaces(m)), tree_(TriangleTree::of(m, faces_))
     {
         for (const FaceType* f : faces_)
             for (int j = 0; j < 3; ++j)
@@ -135,15 +135,6 @@ public:
     }
 
 private:
-    static std::vector<TriangleTree::Triangle> triangles(const std::vector<FaceType*>& faces)
-    {
-        std::vector<TriangleTree::Triangle> t(faces.size());
-        for (std::size_t i = 0; i < faces.size(); ++i)
-            for (int j = 0; j < 3; ++j)
-                t[i][std::size_t(j)] = vcg::Point3d::Construct(faces[i]->cP(j));
-        return t;
-    }
-
     std::vector<FaceType*> faces_;
     TriangleTree tree_;
     vcg::Box3d bounds_;

@@ -215,6 +215,8 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     weights.planar = params.planarQuadric ? 1e-3 : 0.0;
     ctx.quadrics.init(m, weights, [&](FaceType& f, int j) { return f.IsUserBit(ctx.bits.edge[j]); });
     ctx.storeInputNormals(m);
+    if (params.normalCheck && params.facingCheck)
+        ctx.surface = std::make_shared<InputSurface>(m, ctx.diagonal);
     ctx.clearRingChanges(m);
     return true;
 }
@@ -237,7 +239,7 @@ void releaseCollapse(MeshType& m, CollapseContext<MeshType>& ctx)
 
 namespace detail {
 
-// The last step of the relaxation ladder (collapseToTarget); false when it was taken already.
+// The first step of the relaxation ladder (collapseToTarget); false when it was taken already.
 template <class MeshType>
 bool relaxShapeGuards(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats)
 {
@@ -251,6 +253,19 @@ bool relaxShapeGuards(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
     return false;
 }
 
+// The second step: a collapse whose faces turn away from the input surface (input_surface.h)
+// is no longer refused but ranked at featurePenalty times its error, as a feature break is.
+template <class MeshType>
+bool relaxFacingCheck(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats)
+{
+    if (!ctx.surface || ctx.facingPenalty > 0)
+        return false;
+    ctx.facingPenalty = std::max(1.0, ctx.params.featurePenalty);
+    stats.relaxed.push_back("faces may turn away from the input surface from " + std::to_string(m.fn) +
+                            " faces on, ranked at " + std::to_string(int(ctx.facingPenalty)) + "x their error");
+    return true;
+}
+
 }  // namespace detail
 
 // The collapses themselves, on a prepared context, until stats.targetFaces or until no
@@ -259,8 +274,12 @@ bool relaxShapeGuards(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
 //   1. features are never locks in the first place: collapses that break one are ranked
 //      at featurePenalty times their error (cad_edge_collapse.h), and so is removing a
 //      small component whole (component_removal.h): they run when they are cheaper;
-//   2. the shape guards (minCompactness, no free slivers).
-// Flips, the link condition (topology) and locked (non-manifold) vertices never give way.
+//   2. the shape guards (minCompactness, no free slivers): a sliver is seldom seen;
+//   3. the input-surface check (input_surface.h): a face turned away from the surface near
+//      it is shaded as the wrong side, so it is priced, not refused, only when nothing else
+//      reaches the target.
+// Flips of a face against itself (cad_edge_collapse.h's normal checks), the link condition
+// (topology) and locked (non-manifold) vertices never give way.
 template <class MeshType>
 void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats, vcg::CallBackPos* progress)
 {
@@ -296,7 +315,8 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
             continue;
         // Refused edges left the heap, and an edge whose neighbourhood has changed since
         // may be acceptable now: rebuild it while that still helps, then relax.
-        if (collapsesSinceInit == 0 && !(faceTarget && detail::relaxShapeGuards(m, ctx, stats)))
+        if (collapsesSinceInit == 0 &&
+            !(faceTarget && (detail::relaxShapeGuards(m, ctx, stats) || detail::relaxFacingCheck(m, ctx, stats))))
             break;
         collapsesSinceInit = 0;
         fillHeap();

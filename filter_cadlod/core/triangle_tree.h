@@ -23,17 +23,24 @@ namespace cadlod {
 class TriangleTree
 {
 public:
+    // Triangles as corner indices into a copy of the mesh's vertex positions, in single
+    // precision as the meshes' coordinates are: a third of the memory of three double
+    // corners, nothing lost. Distances are computed in double.
+    using Corners = std::array<std::uint32_t, 3>;
     using Triangle = std::array<vcg::Point3d, 3>;
 
     // `triangles[i]` is the i-th triangle; closest() returns that index.
-    explicit TriangleTree(std::vector<Triangle> triangles) : triangles_(std::move(triangles))
+    TriangleTree(std::vector<vcg::Point3f> vertices, std::vector<Corners> triangles)
+        : vertices_(std::move(vertices)), triangles_(std::move(triangles))
     {
         order_.resize(triangles_.size());
         for (std::uint32_t i = 0; i < order_.size(); ++i)
             order_[i] = i;
         centroids_.resize(triangles_.size());
-        for (std::size_t i = 0; i < triangles_.size(); ++i)
-            centroids_[i] = (triangles_[i][0] + triangles_[i][1] + triangles_[i][2]) / 3.0;
+        for (std::size_t i = 0; i < triangles_.size(); ++i) {
+            const Triangle t = triangle(i);
+            centroids_[i] = (t[0] + t[1] + t[2]) / 3.0;
+        }
         if (!triangles_.empty()) {
             nodes_.reserve(2 * triangles_.size() / kLeafSize + 2);
             nodes_.emplace_back();
@@ -43,11 +50,32 @@ public:
         centroids_.shrink_to_fit();
     }
 
+    // The faces `faces` (pointers into m.face) over a copy of m's vertex positions.
+    template <class MeshType, class FacePointer>
+    static TriangleTree of(const MeshType& m, const std::vector<FacePointer>& faces)
+    {
+        std::vector<vcg::Point3f> vertices(m.vert.size());
+        for (std::size_t i = 0; i < m.vert.size(); ++i)
+            vertices[i] = vcg::Point3f::Construct(m.vert[i].cP());
+        std::vector<Corners> corners(faces.size());
+        for (std::size_t i = 0; i < faces.size(); ++i)
+            for (int j = 0; j < 3; ++j)
+                corners[i][std::size_t(j)] = std::uint32_t(faces[i]->cV(j) - &m.vert[0]);
+        return TriangleTree(std::move(vertices), std::move(corners));
+    }
+
+    Triangle triangle(std::size_t index) const
+    {
+        const Corners& c = triangles_[index];
+        return {vcg::Point3d::Construct(vertices_[c[0]]), vcg::Point3d::Construct(vertices_[c[1]]),
+                vcg::Point3d::Construct(vertices_[c[2]])};
+    }
+
     bool empty() const { return triangles_.empty(); }
 
     double distance(std::size_t index, const vcg::Point3d& p) const
     {
-        return std::sqrt(triangleDistance2(triangles_[index], p));
+        return std::sqrt(triangleDistance2(triangle(index), p));
     }
 
     // Index of the closest triangle to p (-1 if none within maxDistance) and the distance.
@@ -76,7 +104,7 @@ public:
                 for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
                     if (!accept(order_[k]))
                         continue;
-                    const double d2 = triangleDistance2(triangles_[order_[k]], p);
+                    const double d2 = triangleDistance2(triangle(order_[k]), p);
                     if (d2 < best2) {
                         best2 = d2;
                         best = order_[k];
@@ -104,10 +132,10 @@ public:
     }
 
 private:
-    static constexpr std::uint32_t kLeafSize = 4;
+    static constexpr std::uint32_t kLeafSize = 8;
 
     struct Node {
-        vcg::Box3d box;
+        vcg::Box3f box;  // of float corners: exact
         std::uint32_t first = 0;  // leaf: first index into order_; inner: index of the first child
         std::uint32_t count = 0;  // leaf: number of triangles; inner: 0
     };
@@ -116,10 +144,11 @@ private:
     // sit next to each other, so it needs one index.
     void build(std::uint32_t slot, std::uint32_t begin, std::uint32_t end)
     {
-        vcg::Box3d box, centres;
+        vcg::Box3f box;
+        vcg::Box3d centres;
         for (std::uint32_t k = begin; k < end; ++k) {
-            for (const vcg::Point3d& v : triangles_[order_[k]])
-                box.Add(v);
+            for (const std::uint32_t v : triangles_[order_[k]])
+                box.Add(vertices_[v]);
             centres.Add(centroids_[order_[k]]);
         }
         nodes_[slot].box = box;
@@ -142,11 +171,12 @@ private:
         build(children + 1, middle, end);
     }
 
-    static double boxDistance2(const vcg::Box3d& b, const vcg::Point3d& p)
+    static double boxDistance2(const vcg::Box3f& b, const vcg::Point3d& p)
     {
         double d2 = 0;
         for (int i = 0; i < 3; ++i) {
-            const double d = p[i] < b.min[i] ? b.min[i] - p[i] : (p[i] > b.max[i] ? p[i] - b.max[i] : 0.0);
+            const double lo = b.min[i], hi = b.max[i];
+            const double d = p[i] < lo ? lo - p[i] : (p[i] > hi ? p[i] - hi : 0.0);
             d2 += d * d;
         }
         return d2;
@@ -181,7 +211,8 @@ private:
         return (ap - ab * (vb * denom) - ac * (vc * denom)).SquaredNorm();
     }
 
-    std::vector<Triangle> triangles_;
+    std::vector<vcg::Point3f> vertices_;
+    std::vector<Corners> triangles_;
     std::vector<std::uint32_t> order_;
     std::vector<vcg::Point3d> centroids_;
     std::vector<Node> nodes_;

@@ -244,4 +244,54 @@ inline void circuitBoard(CadBuilder& b)
     b.translate(first, 88, 40, 1.6);
 }
 
+// A chip's gull-wing leads: thin strips (0.15 x 0.3) bent twice, each a closed part of its
+// own, standing out of a body. Where a simplifier cuts across a bend, a face ends up nearer
+// the strip's far side than its own: turned away from the surface a viewer sees.
+inline void gullWingChip(CadBuilder& b, int leads)
+{
+    b.currentPart = 0;
+    const double pitch = 0.65, body = pitch * leads;
+    const int first = stripPlate(b, 3.0, body, 1.4, 4);
+    b.translate(first, -3.0, 0, 0.3);
+    const double t = 0.15, w = 0.3, r = 0.25;
+    // The lead's centre line in (x, z): out of the body, down, out along the board.
+    std::vector<std::array<double, 4>> path;  // x, z, tangent x, tangent z
+    for (int i = 0; i <= 6; ++i)
+        path.push_back({0.4 * i / 6, 1.0, 1, 0});
+    for (int i = 1; i <= 8; ++i) {
+        const double a = M_PI / 2 * i / 8;
+        path.push_back({0.4 + r * std::sin(a), 1.0 - r + r * std::cos(a), std::cos(a), -std::sin(a)});
+    }
+    for (int i = 1; i <= 3; ++i)
+        path.push_back({0.4 + r, 1.0 - r - (1.0 - 2 * r) * i / 3, 0, -1});
+    for (int i = 1; i <= 8; ++i) {
+        const double a = M_PI / 2 * i / 8;
+        path.push_back({0.4 + 2 * r - r * std::cos(a), r - r * std::sin(a), std::sin(a), -std::cos(a)});
+    }
+    for (int i = 1; i <= 6; ++i)
+        path.push_back({0.4 + 2 * r + 0.6 * i / 6, 0, 1, 0});
+    for (int lead = 0; lead < leads; ++lead) {
+        b.currentPart = lead + 1;
+        const double y = pitch * (lead + 0.5) - w / 2;
+        const int base = int(b.points.size());
+        for (const auto& q : path) {
+            const double nx = -q[3], nz = q[2];  // across the strip, in the bend's plane
+            for (const auto& c : {std::array<double, 2>{-1, 0}, {1, 0}, {1, 1}, {-1, 1}})
+                b.addPoint(q[0] + c[0] * nx * t / 2, y + c[1] * w, q[1] + c[0] * nz * t / 2);
+        }
+        const int stations = int(path.size());
+        auto at = [&](int station, int corner) { return base + 4 * station + corner % 4; };
+        for (int i = 0; i + 1 < stations; ++i)
+            for (int k = 0; k < 4; ++k) {
+                b.addTriangle(at(i, k), at(i + 1, k), at(i + 1, k + 1));
+                b.addTriangle(at(i, k), at(i + 1, k + 1), at(i, k + 1));
+            }
+        b.addTriangle(at(0, 0), at(0, 2), at(0, 1));
+        b.addTriangle(at(0, 0), at(0, 3), at(0, 2));
+        const int e = stations - 1;
+        b.addTriangle(at(e, 0), at(e, 1), at(e, 2));
+        b.addTriangle(at(e, 0), at(e, 2), at(e, 3));
+    }
+}
+
 }  // namespace cadlod::test

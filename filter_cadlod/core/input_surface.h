@@ -1,0 +1,96 @@
+// The surface a simplification started from, kept so that a collapse can be checked
+// against it before it runs: no face it makes may be turned over 90° away from the input
+// surface nearest to it.
+//
+// The per-collapse normal checks of cad_edge_collapse.h compare a face with itself (before
+// the collapse, and in the input). They cannot see a face that keeps its own orientation
+// but moves across a thin part, or cuts across the bend of a thin strip (a chip's lead, a
+// sheet-metal flange): its nearest input surface is then the far side, which faces the other
+// way. A viewer sees such a face lit as the wrong side. Only the input itself can tell.
+//
+// The test is the one the benchmarks count flipped faces with (tests/simplify/mesh_checks.h):
+// at the face's centroid, the nearest input face, or failing that one facing the same side
+// no farther away than a tie of 1e-5 of the diagonal (where input surfaces touch: a chip
+// standing on a board).
+#pragma once
+
+#include "triangle_tree.h"
+
+#include <vcg/space/point3.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace cadlod {
+
+class InputSurface
+{
+public:
+    // The live faces of `m`, in the coordinates they have now. `diagonal`: the model's.
+    template <class MeshType>
+    InputSurface(const MeshType& m, double diagonal)
+        : tree_(TriangleTree::of(m, liveFaces(m))), tie_(1e-5 * diagonal), maxDistance_(4 * diagonal + 1)
+    {
+        nearestFace_.assign(m.face.size(), -1);
+        std::int32_t next = 0;
+        for (std::size_t i = 0; i < m.face.size(); ++i)
+            if (!m.face[i].IsD())
+                nearestFace_[i] = next++;
+    }
+
+    // Whether a face at `centroid` with unit normal `normal` faces the same side as the
+    // input surface nearest to it. `face`: the face's index in the mesh the surface was made
+    // of. Faces keep their index through collapses and move a little at a time, so the
+    // input face found nearest last time (at first, the face itself) is remembered: when it
+    // faces the same side, only a nearer face can say otherwise, and a search bounded by it
+    // prunes most of the tree.
+    bool facesAlong(std::size_t face, const vcg::Point3d& centroid, const vcg::Point3d& normal)
+    {
+        if (tree_.empty())
+            return true;
+        double bound = maxDistance_;
+        const std::int32_t hint = face < nearestFace_.size() ? nearestFace_[face] : -1;
+        if (hint >= 0 && sameSide(std::size_t(hint), normal)) {
+            bound = tree_.distance(std::size_t(hint), centroid) - tie_;
+            if (!(bound > 0))
+                return true;
+        }
+        double nearest = 0;
+        const std::int64_t i = tree_.closest(centroid, bound, nearest);
+        if (i < 0)
+            return true;
+        if (face < nearestFace_.size())
+            nearestFace_[face] = std::int32_t(i);
+        if (sameSide(std::size_t(i), normal))
+            return true;
+        double aligned = 0;
+        return tree_.closest(centroid, nearest + tie_, aligned,
+                             [&](std::size_t k) { return sameSide(k, normal); }) >= 0;
+    }
+
+private:
+    // The sign is all that counts: the input face's normal need not be unit.
+    bool sameSide(std::size_t face, const vcg::Point3d& normal) const
+    {
+        const TriangleTree::Triangle t = tree_.triangle(face);
+        return ((t[1] - t[0]) ^ (t[2] - t[0])) * normal >= 0;
+    }
+
+    template <class MeshType>
+    static std::vector<const typename MeshType::FaceType*> liveFaces(const MeshType& m)
+    {
+        std::vector<const typename MeshType::FaceType*> faces;
+        faces.reserve(std::size_t(m.fn));
+        for (const auto& f : m.face)
+            if (!f.IsD())
+                faces.push_back(&f);
+        return faces;
+    }
+
+    TriangleTree tree_;
+    std::vector<std::int32_t> nearestFace_;  // per mesh face: the input face found nearest last, -1: none
+    double tie_;
+    double maxDistance_;
+};
+
+}  // namespace cadlod
