@@ -11,7 +11,9 @@
 // The test is the one the benchmarks count flipped faces with (tests/simplify/mesh_checks.h):
 // at the face's centroid, the nearest input face, or failing that one facing the same side
 // no farther away than a tie of 1e-5 of the diagonal (where input surfaces touch: a chip
-// standing on a board).
+// standing on a board). When the faces carry part ids, only the face's own part counts:
+// where two solids of an assembly touch, a face of one that is nearer the other's contact
+// face than its own is hidden in the contact, not turned away from anything a viewer sees.
 #pragma once
 
 #include "triangle_tree.h"
@@ -27,15 +29,21 @@ class InputSurface
 {
 public:
     // The live faces of `m`, in the coordinates they have now. `diagonal`: the model's.
+    // `partOfFace`: per face index, the part a face belongs to (empty: one part).
     template <class MeshType>
-    InputSurface(const MeshType& m, double diagonal)
-        : tree_(TriangleTree::of(m, liveFaces(m))), tie_(1e-5 * diagonal), maxDistance_(4 * diagonal + 1)
+    InputSurface(const MeshType& m, double diagonal, std::vector<std::int32_t> partOfFace = {})
+        : tree_(TriangleTree::of(m, liveFaces(m))), partOfFace_(std::move(partOfFace)), tie_(1e-5 * diagonal),
+          maxDistance_(4 * diagonal + 1)
     {
         nearestFace_.assign(m.face.size(), -1);
         std::int32_t next = 0;
-        for (std::size_t i = 0; i < m.face.size(); ++i)
-            if (!m.face[i].IsD())
-                nearestFace_[i] = next++;
+        for (std::size_t i = 0; i < m.face.size(); ++i) {
+            if (m.face[i].IsD())
+                continue;
+            nearestFace_[i] = next++;
+            if (!partOfFace_.empty())
+                partOfTriangle_.push_back(partOfFace_[i]);
+        }
     }
 
     // Whether a face at `centroid` with unit normal `normal` faces the same side as the
@@ -48,6 +56,9 @@ public:
     {
         if (tree_.empty())
             return true;
+        const bool parts = !partOfTriangle_.empty() && face < partOfFace_.size();
+        const std::int32_t part = parts ? partOfFace_[face] : 0;
+        auto inPart = [&](std::size_t k) { return !parts || partOfTriangle_[k] == part; };
         double bound = maxDistance_;
         const std::int32_t hint = face < nearestFace_.size() ? nearestFace_[face] : -1;
         if (hint >= 0 && sameSide(std::size_t(hint), normal)) {
@@ -56,7 +67,7 @@ public:
                 return true;
         }
         double nearest = 0;
-        const std::int64_t i = tree_.closest(centroid, bound, nearest);
+        const std::int64_t i = tree_.closest(centroid, bound, nearest, inPart);
         if (i < 0)
             return true;
         if (face < nearestFace_.size())
@@ -65,7 +76,7 @@ public:
             return true;
         double aligned = 0;
         return tree_.closest(centroid, nearest + tie_, aligned,
-                             [&](std::size_t k) { return sameSide(k, normal); }) >= 0;
+                             [&](std::size_t k) { return inPart(k) && sameSide(k, normal); }) >= 0;
     }
 
 private:
@@ -88,7 +99,9 @@ private:
     }
 
     TriangleTree tree_;
-    std::vector<std::int32_t> nearestFace_;  // per mesh face: the input face found nearest last, -1: none
+    std::vector<std::int32_t> partOfFace_;      // per mesh face (empty: no parts)
+    std::vector<std::int32_t> partOfTriangle_;  // per input face (tree index)
+    std::vector<std::int32_t> nearestFace_;     // per mesh face: the input face found nearest last, -1: none
     double tie_;
     double maxDistance_;
 };
