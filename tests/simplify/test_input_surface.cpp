@@ -79,6 +79,30 @@ TEST(InputSurface, OnTouchingSurfacesEitherSideIsAlong)
     EXPECT_FALSE(surface.facesAlong(kNoHint, vcg::Point3d(5, 5, 0.05), vcg::Point3d(0, 0, 1)));  // in the plate, nearer its bottom
 }
 
+// Two solids of an assembly, a chip standing 0.05 above a board: a face of the chip near its
+// bottom, facing down, is nearer the board's top (facing up) than the chip's own bottom. It
+// is turned away from the board, not from anything of its own part.
+TEST(InputSurface, OnlyTheFacesOwnPartCounts)
+{
+    CadBuilder b;
+    b.currentPart = 0;
+    stripPlate(b, 10, 10, 0.2, 4);
+    b.currentPart = 1;
+    const int chip = stripPlate(b, 2, 2, 1, 2);
+    b.translate(chip, 4, 4, 0.25);
+    TestMesh m;
+    b.build(m);
+    const std::vector<std::int32_t> parts(b.part.begin(), b.part.end());
+    std::size_t chipFace = 0;
+    while (b.part[chipFace] != 1)
+        ++chipFace;
+    const vcg::Point3d down(0, 0, -1), nearBoard(5, 5, 0.22);
+    EXPECT_FALSE(InputSurface(m, liveDiagonal(m)).facesAlong(chipFace, nearBoard, down));
+    InputSurface byPart(m, liveDiagonal(m), parts);
+    EXPECT_TRUE(byPart.facesAlong(chipFace, nearBoard, down));
+    EXPECT_FALSE(byPart.facesAlong(chipFace, nearBoard, vcg::Point3d(0, 0, 1)));  // its own bottom faces down
+}
+
 // The chip with eight bent leads (2 050 faces) at 93, 95 and 97 %: the face target is reached
 // and no face is turned over 90° from the input face nearest to it. Without the check the
 // same runs turn 6, 18 and 17 faces away.
