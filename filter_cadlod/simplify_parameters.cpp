@@ -33,7 +33,7 @@ void addPlacementParameters(RichParameterList& par)
     par.addParam(RichBool("preserveTopology", d.preserveTopology, "Preserve topology",
                           "Refuse collapses that change the genus or make the mesh non-manifold."));
     par.addParam(RichBool("normalCheck", d.normalCheck, "Normal check",
-                          "Refuse collapses that turn a face too far, against its input side, or away from the input surface nearest to it."));
+                          "Refuse collapses that turn a face too far or against its input side; price like a feature break one that turns a face away from the input surface nearest to it."));
     par.addParam(RichFloat("normalThreshold", d.normalThreshold, "Normal threshold (degrees)",
                            "Largest turn of a face normal in one collapse."));
     par.addParam(RichFloat("minCompactness", d.minCompactness, "Minimum compactness",
@@ -43,7 +43,7 @@ void addPlacementParameters(RichParameterList& par)
     par.addParam(RichBool("planarQuadric", d.planarQuadric, "Planar quadrics",
                           "Tiny extra quadrics on every edge: steadier flat regions."));
     par.addParam(RichBool("relaxToReachTarget", d.relaxToReachTarget, "Reach the target",
-                          "When blocked: allow less compact triangles, then faces turned from the input surface (priced); small parts go whole when cheaper (logged)."));
+                          "When blocked: allow less compact triangles, then drop small parts (logged)."));
     addFeatureParameters(par);
 }
 

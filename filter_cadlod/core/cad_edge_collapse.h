@@ -92,11 +92,14 @@ struct CollapseContext : public vcg::BaseParameterClass {
     int& ringChanged(const VertexType* v) { return ringChangedAt[v - vertexBase]; }
     const VertexType* vertexBase = nullptr;
     std::vector<vcg::Point3f> inputNormal;  // per face index: unit normal in the input
-    // Collapses about to run are checked against the input surface: none may turn a face
-    // away from it (input_surface.h). Null: no check. Once relaxed (simplify.h), a collapse
-    // that does is ranked at facingPenalty times its error instead of refused.
+    // Collapses about to run are checked against the input surface (input_surface.h): one
+    // that turns a face away from it is ranked at facingPenalty times its error, as a feature
+    // break is (0: refused). Null: no check. It gives way in the far field, once the mesh is
+    // down to facingFloor faces.
     std::shared_ptr<InputSurface> surface;
     double facingPenalty = 0.0;
+    int facingFloor = 0;
+    const int* liveFaces = nullptr;  // the mesh's face count
     const typename MeshType::FaceType* faceBase = nullptr;
 
     // Faces keep their identity through collapses (only a vertex is replaced), so the input
@@ -211,7 +214,7 @@ public:
             ++ctx.stats->rejectedTopology;
             return false;
         }
-        if (ctx.surface && !turnsAway_ && !free_ && !newFacesFaceTheInput(ctx)) {
+        if (ctx.surface && !turnsAway_ && !free_ && *ctx.liveFaces > ctx.facingFloor && !newFacesFaceTheInput(ctx)) {
             if (ctx.facingPenalty <= 0) {
                 ++ctx.stats->rejectedFlip;
                 return false;
@@ -660,7 +663,7 @@ private:
     bool feasible_ = true;
     bool breaksFeature_ = false;
     bool evaluated_ = false;
-    bool turnsAway_ = false;  // a new face would turn away from the input surface: priced (facingPenalty)
+    bool turnsAway_ = false;  // a new face would turn away from the input surface: ranked at facingPenalty
     bool free_ = false;       // costs no more than the flat floor
     int evaluatedAt_ = 0;  // ctx.mark when evaluated
 };

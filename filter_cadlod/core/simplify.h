@@ -21,6 +21,10 @@
 
 namespace cadlod {
 
+// Below this share of its input faces a mesh is in the far field, where the input-surface
+// check gives way (issue 13): the paper's levels and issue 14's reductions stop at 95 %.
+inline constexpr double kFacingFarField = 0.05;
+
 namespace detail {
 
 inline bool validateParams(const SimplifyParams& p, std::string& why)
@@ -224,6 +228,9 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
                 partOfFace[i] = handle[i];
         }
         ctx.surface = std::make_shared<InputSurface>(m, ctx.diagonal, std::move(partOfFace));
+        ctx.facingPenalty = params.featurePenalty;
+        ctx.facingFloor = int(kFacingFarField * m.fn);
+        ctx.liveFaces = &m.fn;
     }
     ctx.clearRingChanges(m);
     return true;
@@ -247,7 +254,7 @@ void releaseCollapse(MeshType& m, CollapseContext<MeshType>& ctx)
 
 namespace detail {
 
-// The first step of the relaxation ladder (collapseToTarget); false when it was taken already.
+// The relaxation ladder's step (collapseToTarget); false when it was taken already.
 template <class MeshType>
 bool relaxShapeGuards(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats)
 {
@@ -261,19 +268,6 @@ bool relaxShapeGuards(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
     return false;
 }
 
-// The second step: a collapse whose faces turn away from the input surface (input_surface.h)
-// is no longer refused but ranked at featurePenalty times its error, as a feature break is.
-template <class MeshType>
-bool relaxFacingCheck(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats)
-{
-    if (!ctx.surface || ctx.facingPenalty > 0)
-        return false;
-    ctx.facingPenalty = std::max(1.0, ctx.params.featurePenalty);
-    stats.relaxed.push_back("faces may turn away from the input surface from " + std::to_string(m.fn) +
-                            " faces on, ranked at " + std::to_string(int(ctx.facingPenalty)) + "x their error");
-    return true;
-}
-
 }  // namespace detail
 
 // The collapses themselves, on a prepared context, until stats.targetFaces or until no
@@ -282,10 +276,10 @@ bool relaxFacingCheck(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
 //   1. features are never locks in the first place: collapses that break one are ranked
 //      at featurePenalty times their error (cad_edge_collapse.h), and so is removing a
 //      small component whole (component_removal.h): they run when they are cheaper;
-//   2. the shape guards (minCompactness, no free slivers): a sliver is seldom seen;
-//   3. the input-surface check (input_surface.h): a face turned away from the surface near
-//      it is shaded as the wrong side, so it is priced, not refused, only when nothing else
-//      reaches the target.
+//      So is a collapse that turns a face away from the input surface near it
+//      (input_surface.h), which a viewer sees lit as the wrong side; in the far field (the
+//      mesh down to kFacingFarField of its faces) that check gives way, logged;
+//   2. the shape guards (minCompactness, no free slivers).
 // Flips of a face against itself (cad_edge_collapse.h's normal checks), the link condition
 // (topology) and locked (non-manifold) vertices never give way.
 template <class MeshType>
@@ -306,6 +300,9 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
         }
     };
     fillHeap();
+    if (ctx.surface && stats.targetFaces < ctx.facingFloor)
+        stats.relaxed.push_back("faces may turn away from the input surface below " + std::to_string(ctx.facingFloor) +
+                                " faces (the far field: under 5 % of the input)");
     if (stats.targetFaces > 0)
         session.SetTargetSimplices(stats.targetFaces);
     const int toRemove = std::max(1, m.fn - stats.targetFaces);
@@ -323,8 +320,7 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
             continue;
         // Refused edges left the heap, and an edge whose neighbourhood has changed since
         // may be acceptable now: rebuild it while that still helps, then relax.
-        if (collapsesSinceInit == 0 &&
-            !(faceTarget && (detail::relaxShapeGuards(m, ctx, stats) || detail::relaxFacingCheck(m, ctx, stats))))
+        if (collapsesSinceInit == 0 && !(faceTarget && detail::relaxShapeGuards(m, ctx, stats)))
             break;
         collapsesSinceInit = 0;
         fillHeap();

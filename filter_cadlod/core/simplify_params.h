@@ -35,8 +35,9 @@ struct SimplifyParams {
     bool preserveTopology = true;    // link condition (no new non-manifold/genus change)
     bool normalCheck = true;         // reject collapses that turn a face by > normalThreshold
     double normalThreshold = 60.0;   // degrees
-    bool facingCheck = true;         // with normalCheck: no collapse may leave a face turned over 90°
-                                     // from the input surface nearest to it (input_surface.h); relaxed last
+    bool facingCheck = true;         // with normalCheck: a collapse leaving a face turned over 90° from
+                                     // the input surface nearest to it is ranked like a feature break
+                                     // (input_surface.h); off in the far field (under 5 % of the faces)
     double minCompactness = 0.05;    // never create a face below this unless it improves the worst;
                                      // free collapses not below max(0.1, this); 0: no guard
     double qualityThreshold = 0.3;   // free collapses leaving faces below this compactness wait longer

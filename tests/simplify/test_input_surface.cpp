@@ -103,9 +103,10 @@ TEST(InputSurface, OnlyTheFacesOwnPartCounts)
     EXPECT_FALSE(byPart.facesAlong(chipFace, nearBoard, vcg::Point3d(0, 0, 1)));  // its own bottom faces down
 }
 
-// The chip with eight bent leads (2 050 faces) at 93, 95 and 97 %: the face target is reached
-// and no face is turned over 90° from the input face nearest to it. Without the check the
-// same runs turn 6, 18 and 17 faces away.
+// The chip with eight bent leads (2 050 faces) at 93 and 95 %: the face target is reached, and
+// the collapses that turn a face over 90° from the input face nearest to it, priced like
+// feature breaks, run only where everything else costs 16 times more: none at 93 %, one at
+// 95 %. Without the check the same runs turn 6 and 18 faces away.
 TEST(SimplifyFacing, GullWingLeadsKeepFacingTheirSurface)
 {
     CadBuilder b;
@@ -113,14 +114,37 @@ TEST(SimplifyFacing, GullWingLeadsKeepFacingTheirSurface)
     TestMesh input, m;
     b.build(input, true);
     ASSERT_GT(signedVolume(input), 0);  // closed and outward: a real part
-    for (double reduction : {93.0, 95.0, 97.0}) {
-        const SimplifyStats checked = simplifyChip(m, input, reduction, true);
+    struct Case {
+        double reduction;
+        int mostTurned, leastTurnedUnchecked;
+    };
+    for (const Case c : {Case{93.0, 0, 6}, Case{95.0, 1, 18}}) {
+        const SimplifyStats checked = simplifyChip(m, input, c.reduction, true);
         ASSERT_TRUE(checked.ok) << checked.message;
-        EXPECT_LE(m.fn, checked.targetFaces) << reduction << " %: " << checked.message;
-        EXPECT_EQ(foldedFaces(m, input), 0) << reduction << " %";
+        EXPECT_LE(m.fn, checked.targetFaces) << c.reduction << " %: " << checked.message;
+        EXPECT_LE(foldedFaces(m, input), c.mostTurned) << c.reduction << " %";
 
-        const SimplifyStats unchecked = simplifyChip(m, input, reduction, false);
+        const SimplifyStats unchecked = simplifyChip(m, input, c.reduction, false);
         ASSERT_TRUE(unchecked.ok) << unchecked.message;
-        EXPECT_GT(foldedFaces(m, input), 0) << reduction << " %: the leads no longer test the check";
+        EXPECT_GE(foldedFaces(m, input), c.leastTurnedUnchecked) << c.reduction << " %: the leads no longer test the check";
     }
+}
+
+// Beyond 95 % (under 5 % of the faces: the far field) the check gives way, and the log says so.
+TEST(SimplifyFacing, GivesWayInTheFarFieldAndSaysSo)
+{
+    CadBuilder b;
+    gullWingChip(b, 8);
+    TestMesh input, m;
+    b.build(input, true);
+    const SimplifyStats far = simplifyChip(m, input, 97.0, true);
+    ASSERT_TRUE(far.ok) << far.message;
+    EXPECT_LE(m.fn, far.targetFaces);
+    bool logged = false;
+    for (const std::string& line : far.relaxed)
+        logged |= line.find("turn away from the input surface below 102 faces") != std::string::npos;
+    EXPECT_TRUE(logged);
+    const SimplifyStats mid = simplifyChip(m, input, 95.0, true);
+    for (const std::string& line : mid.relaxed)
+        EXPECT_EQ(line.find("input surface"), std::string::npos) << line;
 }
