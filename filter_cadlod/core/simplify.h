@@ -254,7 +254,7 @@ void releaseCollapse(MeshType& m, CollapseContext<MeshType>& ctx)
 
 namespace detail {
 
-// The relaxation ladder's step (collapseToTarget); false when it was taken already.
+// The relaxation ladder's second step (collapseToTarget); false when it was taken already.
 template <class MeshType>
 bool relaxShapeGuards(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats)
 {
@@ -276,7 +276,7 @@ bool relaxShapeGuards(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
 //   1. features are never locks in the first place: collapses that break one are ranked
 //      at featurePenalty times their error (cad_edge_collapse.h), and so is removing a
 //      small component whole (component_removal.h): they run when they are cheaper;
-//      So is a collapse that turns a face away from the input surface near it
+//      so is a collapse that turns a face away from the input surface near it
 //      (input_surface.h), which a viewer sees lit as the wrong side; in the far field (the
 //      mesh down to kFacingFarField of its faces) that check gives way, logged;
 //   2. the shape guards (minCompactness, no free slivers).
@@ -300,9 +300,6 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
         }
     };
     fillHeap();
-    if (ctx.surface && stats.targetFaces < ctx.facingFloor)
-        stats.relaxed.push_back("faces may turn away from the input surface below " + std::to_string(ctx.facingFloor) +
-                                " faces (the far field: under 5 % of the input)");
     if (stats.targetFaces > 0)
         session.SetTargetSimplices(stats.targetFaces);
     const int toRemove = std::max(1, m.fn - stats.targetFaces);
@@ -326,6 +323,9 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
         fillHeap();
     }
     ctx.heap = nullptr;
+    if (ctx.surface && m.fn < ctx.facingFloor)
+        stats.relaxed.push_back("faces may turn away from the input surface below " + std::to_string(ctx.facingFloor) +
+                                " faces (the far field: under 5 % of the input)");
 }
 
 // Simplifies `m` in place. `progress` may be null.
