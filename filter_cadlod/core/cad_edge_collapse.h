@@ -99,6 +99,7 @@ struct CollapseContext : public vcg::BaseParameterClass {
     std::shared_ptr<InputSurface> surface;
     double facingPenalty = 0.0;
     int facingFloor = 0;
+    bool facingGaveWay = false;      // a collapse ran unchecked below facingFloor
     const int* liveFaces = nullptr;  // the mesh's face count
     const typename MeshType::FaceType* faceBase = nullptr;
 
@@ -214,17 +215,11 @@ public:
             ++ctx.stats->rejectedTopology;
             return false;
         }
-        if (ctx.surface && !turnsAway_ && !free_ && *ctx.liveFaces > ctx.facingFloor && !newFacesFaceTheInput(ctx)) {
-            if (ctx.facingPenalty <= 0) {
-                ++ctx.stats->rejectedFlip;
-                return false;
-            }
-            turnsAway_ = true;
-            this->_priority *= ScalarType(ctx.facingPenalty);
-            if (ctx.heap && !ctx.heap->empty() && this->_priority > ctx.heap->front().pri) {
-                requeue(*ctx.heap);
-                return false;
-            }
+        if (ctx.surface && !turnsAway_ && !free_) {
+            if (*ctx.liveFaces <= ctx.facingFloor)
+                ctx.facingGaveWay = true;
+            else if (!newFacesFaceTheInput(ctx))
+                return priceTurningAway(ctx);
         }
         return true;
     }
@@ -340,6 +335,23 @@ private:
     {
         heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(a, b), static_cast<Context*>(pp)->mark, pp)));
         std::push_heap(heap.begin(), heap.end());
+    }
+
+    // The collapse would turn a face away from the input surface: refused, or ranked at
+    // facingPenalty times its priority (back into the heap when that is no longer the top).
+    bool priceTurningAway(Context& ctx)
+    {
+        if (ctx.facingPenalty <= 0) {
+            ++ctx.stats->rejectedFlip;
+            return false;
+        }
+        turnsAway_ = true;
+        this->_priority *= ScalarType(ctx.facingPenalty);
+        if (ctx.heap && !ctx.heap->empty() && this->_priority > ctx.heap->front().pri) {
+            requeue(*ctx.heap);
+            return false;
+        }
+        return true;
     }
 
     // Checked last, on the collapse about to run only: a closest-face search or two per new

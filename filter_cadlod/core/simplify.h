@@ -323,7 +323,7 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
         fillHeap();
     }
     ctx.heap = nullptr;
-    if (ctx.surface && m.fn < ctx.facingFloor)
+    if (ctx.facingGaveWay)
         stats.relaxed.push_back("faces may turn away from the input surface below " + std::to_string(ctx.facingFloor) +
                                 " faces (the far field: under 5 % of the input)");
 }
