@@ -100,7 +100,7 @@ struct CollapseContext : public vcg::BaseParameterClass {
     double facingPenalty = 0.0;
     int facingFloor = 0;
     bool facingGaveWay = false;      // a collapse ran unchecked below facingFloor
-    const int* liveFaces = nullptr;  // the mesh's face count
+    const int* faceCount = nullptr;  // the mesh's live faces (m.fn)
     const typename MeshType::FaceType* faceBase = nullptr;
 
     // Faces keep their identity through collapses (only a vertex is replaced), so the input
@@ -216,7 +216,7 @@ public:
             return false;
         }
         if (ctx.surface && !turnsAway_ && !free_) {
-            if (*ctx.liveFaces <= ctx.facingFloor)
+            if (*ctx.faceCount <= ctx.facingFloor)
                 ctx.facingGaveWay = true;
             else if (!newFacesFaceTheInput(ctx))
                 return priceTurningAway(ctx);

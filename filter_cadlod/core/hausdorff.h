@@ -71,17 +71,6 @@ double liveDiagonal(const MeshType& m)
 
 namespace detail {
 
-template <class MeshType>
-std::vector<typename MeshType::FaceType*> liveFaces(MeshType& m)
-{
-    std::vector<typename MeshType::FaceType*> faces;
-    faces.reserve(m.fn);
-    for (auto& f : m.face)
-        if (!f.IsD())
-            faces.push_back(&f);
-    return faces;
-}
-
 // Closest live face of a mesh to query points (a TriangleTree over its faces).
 template <class MeshType>
 class ClosestFace

@@ -32,7 +32,7 @@ public:
     // `partOfFace`: per face index, the part a face belongs to (empty: one part).
     template <class MeshType>
     InputSurface(const MeshType& m, double diagonal, std::vector<std::int32_t> partOfFace = {})
-        : tree_(TriangleTree::of(m, liveFaces(m))), partOfFace_(std::move(partOfFace)), tie_(1e-5 * diagonal),
+        : tree_(TriangleTree::of(m, detail::liveFaces(m))), partOfFace_(std::move(partOfFace)), tie_(1e-5 * diagonal),
           maxDistance_(4 * diagonal + 1)
     {
         nearestFace_.assign(m.face.size(), -1);
@@ -85,17 +85,6 @@ private:
     {
         const TriangleTree::Triangle t = tree_.triangle(face);
         return ((t[1] - t[0]) ^ (t[2] - t[0])) * normal >= 0;
-    }
-
-    template <class MeshType>
-    static std::vector<const typename MeshType::FaceType*> liveFaces(const MeshType& m)
-    {
-        std::vector<const typename MeshType::FaceType*> faces;
-        faces.reserve(std::size_t(m.fn));
-        for (const auto& f : m.face)
-            if (!f.IsD())
-                faces.push_back(&f);
-        return faces;
     }
 
     TriangleTree tree_;

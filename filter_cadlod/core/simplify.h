@@ -230,7 +230,7 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
         ctx.surface = std::make_shared<InputSurface>(m, ctx.diagonal, std::move(partOfFace));
         ctx.facingPenalty = params.featurePenalty;
         ctx.facingFloor = int(kFacingFarField * m.fn);
-        ctx.liveFaces = &m.fn;
+        ctx.faceCount = &m.fn;
     }
     ctx.clearRingChanges(m);
     return true;

@@ -20,6 +20,22 @@
 
 namespace cadlod {
 
+namespace detail {
+
+// Pointers to the live faces of `m` (to const faces when `m` is const).
+template <class MeshType>
+auto liveFaces(MeshType& m)
+{
+    std::vector<decltype(&m.face[0])> faces;
+    faces.reserve(std::size_t(m.fn));
+    for (auto& f : m.face)
+        if (!f.IsD())
+            faces.push_back(&f);
+    return faces;
+}
+
+}  // namespace detail
+
 class TriangleTree
 {
 public:
