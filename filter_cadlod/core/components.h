@@ -10,6 +10,7 @@
 #include <vcg/complex/complex.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <string>
 #include <unordered_map>
@@ -157,40 +158,63 @@ void removeComponent(MeshType& m, const Component<MeshType>& c)
     }
 }
 
-// The twelve triangles of an axis-aligned box, outward facing, appended to `m` as part
-// `part` (when the mesh has parts) with the given face colour.
-template <class MeshType>
-void appendBox(MeshType& m, const vcg::Box3d& box, int part, const vcg::Color4b& color)
+namespace detail {
+
+// The corners of `box` listed in `corners` (numbered by bits x, y, z), appended to `m`.
+template <class MeshType, std::size_t N>
+std::array<typename MeshType::VertexPointer, N> appendBoxCorners(MeshType& m, const vcg::Box3d& box,
+                                                                 const std::array<int, N>& corners)
 {
     using CoordType = typename MeshType::CoordType;
-    auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, 8);
-    typename MeshType::VertexPointer v[8];
-    for (int k = 0; k < 8; ++k, ++vi) {
-        const vcg::Point3d p(k & 1 ? box.max[0] : box.min[0], k & 2 ? box.max[1] : box.min[1],
-                             k & 4 ? box.max[2] : box.min[2]);
-        vi->P() = CoordType::Construct(p);
+    auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, N);
+    std::array<typename MeshType::VertexPointer, N> v;
+    for (std::size_t k = 0; k < N; ++k, ++vi) {
+        const int c = corners[k];
+        vi->P() = CoordType::Construct(vcg::Point3d(c & 1 ? box.max[0] : box.min[0], c & 2 ? box.max[1] : box.min[1],
+                                                    c & 4 ? box.max[2] : box.min[2]));
         v[k] = &*vi;
     }
-    // Corners are numbered by bits (x, y, z); each face lists its corners counter-clockwise
-    // seen from outside.
-    static const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
-                                    {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-    auto fi = vcg::tri::Allocator<MeshType>::AddFaces(m, 12);
+    return v;
+}
+
+// `count` faces of `m` from `first` on get part `part` and colour `color`, where the mesh
+// carries parts and face colours.
+template <class MeshType>
+void tagFaces(MeshType& m, typename MeshType::FaceIterator first, int count, int part, const vcg::Color4b& color)
+{
     const bool parts = vcg::tri::HasPerFaceAttribute(m, kPartAttribute);
     const bool colors = vcg::tri::HasPerFaceColor(m);
     typename MeshType::template PerFaceAttributeHandle<int> partOf;
     if (parts)
         partOf = facePartHandle(m);
+    for (int k = 0; k < count; ++k, ++first) {
+        if (colors)
+            first->C() = color;
+        if (parts)
+            partOf[first] = part;
+    }
+}
+
+}  // namespace detail
+
+// The twelve triangles of an axis-aligned box, outward facing, appended to `m` as part
+// `part` (when the mesh has parts) with the given face colour.
+template <class MeshType>
+void appendBox(MeshType& m, const vcg::Box3d& box, int part, const vcg::Color4b& color)
+{
+    const auto v = detail::appendBoxCorners(m, box, std::array<int, 8>{0, 1, 2, 3, 4, 5, 6, 7});
+    // Each face lists its corners counter-clockwise seen from outside.
+    static const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                                    {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+    const auto first = vcg::tri::Allocator<MeshType>::AddFaces(m, 12);
+    auto fi = first;
     for (const auto& q : quads)
         for (int t = 0; t < 2; ++t, ++fi) {
             fi->V(0) = v[q[0]];
             fi->V(1) = v[q[1 + t]];
             fi->V(2) = v[q[2 + t]];
-            if (colors)
-                fi->C() = color;
-            if (parts)
-                partOf[fi] = part;
         }
+    detail::tagFaces(m, first, 12, part, color);
 }
 
 // The tetrahedron inscribed in an axis-aligned box (four of its corners, no two on one
@@ -198,23 +222,10 @@ void appendBox(MeshType& m, const vcg::Box3d& box, int part, const vcg::Color4b&
 template <class MeshType>
 void appendTetrahedron(MeshType& m, const vcg::Box3d& box, int part, const vcg::Color4b& color)
 {
-    using CoordType = typename MeshType::CoordType;
-    // Corners numbered by bits (x, y, z): 0, 3, 5 and 6 differ pairwise in two bits.
-    const int corners[4] = {0, 3, 5, 6};
-    auto vi = vcg::tri::Allocator<MeshType>::AddVertices(m, 4);
-    typename MeshType::VertexPointer v[4];
-    for (int k = 0; k < 4; ++k, ++vi) {
-        const int c = corners[k];
-        vi->P() = CoordType::Construct(vcg::Point3d(c & 1 ? box.max[0] : box.min[0], c & 2 ? box.max[1] : box.min[1],
-                                                    c & 4 ? box.max[2] : box.min[2]));
-        v[k] = &*vi;
-    }
-    auto fi = vcg::tri::Allocator<MeshType>::AddFaces(m, 4);
-    const bool parts = vcg::tri::HasPerFaceAttribute(m, kPartAttribute);
-    const bool colors = vcg::tri::HasPerFaceColor(m);
-    typename MeshType::template PerFaceAttributeHandle<int> partOf;
-    if (parts)
-        partOf = facePartHandle(m);
+    // Corners 0, 3, 5 and 6 differ pairwise in two bits.
+    const auto v = detail::appendBoxCorners(m, box, std::array<int, 4>{0, 3, 5, 6});
+    const auto first = vcg::tri::Allocator<MeshType>::AddFaces(m, 4);
+    auto fi = first;
     for (int opposite = 0; opposite < 4; ++opposite, ++fi) {
         int f[3], n = 0;
         for (int k = 0; k < 4; ++k)
@@ -226,11 +237,8 @@ void appendTetrahedron(MeshType& m, const vcg::Box3d& box, int part, const vcg::
             std::swap(f[1], f[2]);
         for (int j = 0; j < 3; ++j)
             fi->V(j) = v[f[j]];
-        if (colors)
-            fi->C() = color;
-        if (parts)
-            partOf[fi] = part;
     }
+    detail::tagFaces(m, first, 4, part, color);
 }
 
 }  // namespace cadlod
