@@ -63,6 +63,18 @@ std::vector<vcg::Point3d> pointsAtTheEdgeOf(const vcg::Box3f& box)
     return points;
 }
 
+// The offset sphere, and a copy of it whose every vertex is moved away from the centre by the
+// factor `scale(vertex - centre)`.
+template <class Scale>
+void sphereAndScaledCopy(TestMesh& sphere, TestMesh& copy, Scale scale)
+{
+    offsetSphere(sphere);
+    offsetSphere(copy);
+    const vcg::Point3f centre = sphere.bbox.Center();
+    for (auto& v : copy.vert)
+        v.P() = centre + (v.P() - centre) * scale(v.P() - centre);
+}
+
 }  // namespace
 
 TEST(ClosestFace, AgreesWithBruteForceUpToAndBeyondTheMeshBox)
@@ -94,11 +106,7 @@ TEST(ClosestFace, AgreesWithBruteForceUpToAndBeyondTheMeshBox)
 TEST(ClosestFace, HausdorffOfAMeshJustLargerThanTheOtherIsItsOffset)
 {
     TestMesh inner, outer;
-    offsetSphere(inner);
-    offsetSphere(outer);
-    const vcg::Point3f centre = inner.bbox.Center();
-    for (auto& v : outer.vert)
-        v.P() = centre + (v.P() - centre) * 1.001f;
+    sphereAndScaledCopy(inner, outer, [](const vcg::Point3f&) { return 1.001f; });
     const HausdorffStats h = oneSidedHausdorff(outer, inner, 20000);
     EXPECT_NEAR(h.max, 0.001 * 7.3, 1e-4);
 }
@@ -106,11 +114,9 @@ TEST(ClosestFace, HausdorffOfAMeshJustLargerThanTheOtherIsItsOffset)
 TEST(Hausdorff, MeasuredInChunksOnTwoThreadsItGivesTheSameFigures)
 {
     TestMesh inner, outer;
-    offsetSphere(inner);
-    offsetSphere(outer);
-    const vcg::Point3f centre = inner.bbox.Center();
-    for (auto& v : outer.vert)
-        v.P() = centre + (v.P() - centre) * (1.0f + 0.01f * std::abs(v.P()[0] - centre[0]) / 7.3f);  // uneven offset
+    sphereAndScaledCopy(inner, outer, [](const vcg::Point3f& fromCentre) {
+        return 1.0f + 0.01f * std::abs(fromCentre[0]) / 7.3f;  // uneven offset
+    });
     std::vector<double> serialVertices, threadedVertices, wholeVertices;
     const HausdorffStats whole = oneSidedHausdorff(outer, inner, 20000, 1, &wholeVertices);
     const HausdorffStats serial = oneSidedHausdorff(outer, inner, 20000, 1, &serialVertices, runInSequence);
