@@ -52,6 +52,9 @@
 
 namespace cadlod {
 
+template <class MeshType>
+class TunnelCut;  // tunnel_cut.h: offered when a collapse fails the link condition
+
 // A face around the collapsing edge that survives it: (new vertex, a, b). What does not
 // depend on the new vertex is computed once per edge, not once per candidate.
 struct RingFace {
@@ -102,6 +105,9 @@ struct CollapseContext : public vcg::BaseParameterClass {
     bool facingGaveWay = false;      // a collapse ran unchecked below facingFloor
     const int* faceCount = nullptr;  // the mesh's live faces (m.fn)
     const typename MeshType::FaceType* faceBase = nullptr;
+    // Deleted elements reserved for tunnel cuts (tunnel_cut.h); empty: no cuts.
+    std::vector<VertexType*> spareVertices;
+    std::vector<typename MeshType::FaceType*> spareFaces;
 
     // Faces keep their identity through collapses (only a vertex is replaced), so the input
     // normal bounds the rotation a face accumulates over many collapses.
@@ -213,6 +219,7 @@ public:
         if (ctx.params.preserveTopology &&
             !vcg::tri::EdgeCollapser<MeshType, VertexPair>::LinkConditions(this->pos)) {
             ++ctx.stats->rejectedTopology;
+            TunnelCut<MeshType>::offer(ctx, this->pos.V(0), this->pos.V(1));
             return false;
         }
         if (ctx.surface && !turnsAway_ && !free_) {
@@ -285,6 +292,23 @@ public:
             if (vfi.V1()->IsRW() && vfi.V2()->IsRW())
                 push(heap, vfi.V1(), vfi.V2(), pp);
         }
+    }
+
+    // The edges of `v` whose other end is writable (after a tunnel cut).
+    static void pushEdgesOf(HeapType& heap, VertexType* v, vcg::BaseParameterClass* pp)
+    {
+        if (!v->IsRW())
+            return;
+        for (VFIterator vfi(v); !vfi.End(); ++vfi) {
+            vfi.V1()->ClearV();
+            vfi.V2()->ClearV();
+        }
+        for (VFIterator vfi(v); !vfi.End(); ++vfi)
+            for (VertexType* w : {vfi.V1(), vfi.V2()})
+                if (!w->IsV() && w->IsRW()) {
+                    w->SetV();
+                    push(heap, v, w, pp);
+                }
     }
 
     // Every edge once, both vertices writable.

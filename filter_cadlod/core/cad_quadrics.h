@@ -76,6 +76,14 @@ public:
         area(v1) += area(v0);
     }
 
+    // One more plane through v (a tunnel's cap), weighted by `area` as a face's plane is.
+    void addPlane(const VertexType* v, const vcg::Point3d& unitNormal, double offset, double area)
+    {
+        const double weight = std::min(area, areaCap_);
+        quadric(v) += planeQuadric(unitNormal, offset, weight);
+        this->area(v) += weight;
+    }
+
     std::size_t bytes() const { return quadric_.capacity() * sizeof(Quadric) + area_.capacity() * sizeof(double); }
 
 private:

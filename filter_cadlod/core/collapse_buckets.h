@@ -112,6 +112,7 @@ public:
             for (int SimplifyStats::*count : kCounts)
                 total.*count += s.*count - b.reported.*count;
             total.largestRemovedComponent = std::max(total.largestRemovedComponent, s.largestRemovedComponent);
+            total.widestTunnelCap = std::max(total.widestTunnelCap, s.widestTunnelCap);
             total.relaxed.insert(total.relaxed.end(), s.relaxed.begin(), s.relaxed.end());
             b.stats.relaxed.clear();
             b.reported = b.stats;
@@ -150,7 +151,8 @@ private:
         &SimplifyStats::featureEdges,        &SimplifyStats::boundaryEdges,     &SimplifyStats::nonManifoldEdges,
         &SimplifyStats::degenerateFaces,     &SimplifyStats::collapses,         &SimplifyStats::rejectedFlip,
         &SimplifyStats::rejectedCompactness, &SimplifyStats::rejectedFeature,   &SimplifyStats::rejectedError,
-        &SimplifyStats::rejectedTopology,    &SimplifyStats::featureBreaks,     &SimplifyStats::removedComponents};
+        &SimplifyStats::rejectedTopology,    &SimplifyStats::featureBreaks,     &SimplifyStats::removedComponents,
+        &SimplifyStats::closedTunnels};
 
     struct Bucket {
         explicit Bucket(MeshType& m) : mesh(m) {}

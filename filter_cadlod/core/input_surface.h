@@ -79,6 +79,15 @@ public:
                              [&](std::size_t k) { return inPart(k) && sameSide(k, normal); }) >= 0;
     }
 
+    // Face `face` (new: a tunnel's cap) belongs where face `like` does.
+    void adopt(std::size_t face, std::size_t like)
+    {
+        if (face < partOfFace_.size() && like < partOfFace_.size())
+            partOfFace_[face] = partOfFace_[like];
+        if (face < nearestFace_.size() && like < nearestFace_.size())
+            nearestFace_[face] = nearestFace_[like];
+    }
+
 private:
     // The sign is all that counts: the input face's normal need not be unit.
     bool sameSide(std::size_t face, const vcg::Point3d& normal) const

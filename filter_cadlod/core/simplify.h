@@ -8,6 +8,7 @@
 #include "component_removal.h"
 #include "layer_metadata.h"
 #include "simplify_params.h"
+#include "tunnel_cut.h"
 
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/selection.h>
@@ -16,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <set>
 #include <string>
 
@@ -193,6 +195,8 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
 
     stats.degenerateFaces = detail::deleteFacesRepeatingAVertex(m);
     vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
+    if (params.closeTunnels && params.preserveTopology)
+        reserveTunnelCuts(m, ctx);  // adds elements: before any pointer into m is kept
     // Part and material (colour) borders are features: a face's surface key is its part id
     // and its colour.
     const bool parts = params.keepPartBorders && vcg::tri::HasPerFaceAttribute(m, kPartAttribute);
@@ -278,10 +282,13 @@ bool relaxShapeGuards(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
 //      small component whole (component_removal.h): they run when they are cheaper;
 //      so is a collapse that turns a face away from the input surface near it
 //      (input_surface.h), which a viewer sees lit as the wrong side; in the far field (the
-//      mesh down to kFacingFarField of its faces) that check gives way, logged;
+//      mesh down to kFacingFarField of its faces) that check gives way, logged; and so is
+//      cutting a tunnel whose rim has shrunk to three edges, where the link condition
+//      refuses every collapse (tunnel_cut.h), logged;
 //   2. the shape guards (minCompactness, no free slivers).
 // Flips of a face against itself (cad_edge_collapse.h's normal checks), the link condition
-// (topology) and locked (non-manifold) vertices never give way.
+// on collapses (no collapse changes the topology: only a priced cut does) and locked
+// (non-manifold) vertices never give way.
 template <class MeshType>
 void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats, vcg::CallBackPos* progress)
 {
@@ -307,6 +314,7 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
     // budget (vcglib reads the process CPU clock, a system call, on every heap pop).
     session.SetTargetOperations(std::max(1000, toRemove / 100));
     int collapsesSinceInit = 0;
+    const int tunnelsBefore = stats.closedTunnels;
     while (m.fn > stats.targetFaces) {
         const bool heapLeft = session.DoOptimization();
         stats.collapses += session.nPerformedOps;
@@ -323,6 +331,14 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
         fillHeap();
     }
     ctx.heap = nullptr;
+    if (stats.closedTunnels > tunnelsBefore) {
+        char line[200];
+        std::snprintf(line, sizeof line,
+                      "closed %d tunnel%s (cut where the rim had shrunk to three edges, and capped), the widest cap "
+                      "%.4g %% of the diagonal",
+                      stats.closedTunnels - tunnelsBefore, stats.closedTunnels - tunnelsBefore == 1 ? "" : "s", ctx.diagonal > 0 ? 100 * stats.widestTunnelCap / ctx.diagonal : 0.0);
+        stats.relaxed.push_back(line);
+    }
     if (ctx.facingGaveWay)
         stats.relaxed.push_back("faces may turn away from the input surface below " + std::to_string(ctx.facingFloor) +
                                 " faces (the far field: under 5 % of the input)");

@@ -33,6 +33,9 @@ struct SimplifyParams {
     bool preserveBoundary = true;    // boundary edges get constraint quadrics
     double boundaryWeight = 1.0;     // multiplier of the boundary/crease constraint weight
     bool preserveTopology = true;    // link condition (no new non-manifold/genus change)
+    bool closeTunnels = true;        // with preserveTopology: a tunnel whose rim has shrunk to three
+                                     // edges may be cut and capped, ranked like a feature break
+                                     // (tunnel_cut.h)
     bool normalCheck = true;         // reject collapses that turn a face by > normalThreshold
     double normalThreshold = 60.0;   // degrees
     bool facingCheck = true;         // with normalCheck: a collapse leaving a face turned over 90° from
@@ -80,6 +83,8 @@ struct SimplifyStats {
     int featureBreaks = 0;         // executed collapses that broke a feature (priced, not refused)
     int removedComponents = 0;     // connected components removed whole
     double largestRemovedComponent = 0.0;  // bbox diagonal, model units
+    int closedTunnels = 0;         // loops of three edges cut and capped (tunnel_cut.h)
+    double widestTunnelCap = 0.0;  // the largest cap inradius, model units
     double errorBound = 0.0;       // the maximum collapse error in force, model units (0: none)
     std::vector<std::string> relaxed;  // one line per relaxation step, for the log
     std::string stoppedBy;         // which criterion ended the run: "face target", "max error", ...

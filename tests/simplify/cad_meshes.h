@@ -198,6 +198,37 @@ inline int stripPlate(CadBuilder& b, double sizeX, double sizeY, double thicknes
     return first;
 }
 
+// A square plate (side × side × thickness) drilled through at its centre: a tunnel, so a
+// closed surface of genus 1. Each flat face is a strip between the square outline and the
+// hole's rim, `segments` points on each (a multiple of 4), as CAD exporters make them.
+inline int drilledPlate(CadBuilder& b, double side, double thickness, double holeRadius, int segments)
+{
+    const int first = int(b.points.size());
+    auto ring = [&](double z, bool square) {
+        std::vector<int> r(segments);
+        for (int j = 0; j < segments; ++j) {
+            const double t = 2 * M_PI * j / segments, c = std::cos(t), s = std::sin(t);
+            const double scale = square ? 0.5 * side / std::max(std::abs(c), std::abs(s)) : holeRadius;
+            r[j] = b.addPoint(scale * c, scale * s, z);
+        }
+        return r;
+    };
+    auto band = [&](const std::vector<int>& a, const std::vector<int>& c) {
+        for (int j = 0; j < segments; ++j) {
+            const int k = (j + 1) % segments;
+            b.addTriangle(a[j], a[k], c[k]);
+            b.addTriangle(a[j], c[k], c[j]);
+        }
+    };
+    const std::vector<int> outerBottom = ring(0, true), outerTop = ring(thickness, true);
+    const std::vector<int> rimBottom = ring(0, false), rimTop = ring(thickness, false);
+    band(outerTop, rimTop);        // top face, facing +z
+    band(rimBottom, outerBottom);  // bottom face, facing -z
+    band(outerBottom, outerTop);   // the sides, facing out
+    band(rimTop, rimBottom);       // the hole's wall, facing its axis
+    return first;
+}
+
 // A small multi-part assembly: a shaft, a base plate, two bolts (separate parts).
 inline void assembly(CadBuilder& b, int segments)
 {

@@ -1,0 +1,134 @@
+// A tunnel (a drilled hole) no longer stops the simplifier far above its target: once its
+// rim has shrunk to three edges it is cut and capped (core/tunnel_cut.h), priced like a
+// feature break and never wider than a maximum error allows.
+#include "cad_meshes.h"
+#include "mesh_checks.h"
+#include "simplify_test_util.h"
+#include "test_mesh.h"
+
+#include "core/hausdorff.h"
+#include "core/simplify.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+using namespace cadlod;
+using namespace cadlod::test;
+
+namespace {
+
+constexpr double kSide = 40, kThickness = 2, kHoleRadius = 4;
+
+void makeDrilledPlate(TestMesh& m)
+{
+    CadBuilder b;
+    drilledPlate(b, kSide, kThickness, kHoleRadius, 32);
+    b.build(m);
+}
+
+// Euler characteristic V - E + F of the live faces (2 for one closed surface of genus 0,
+// 0 for genus 1).
+int eulerCharacteristic(const TestMesh& m)
+{
+    std::vector<char> used(m.vert.size(), 0);
+    int faces = 0;
+    for (const auto& f : m.face)
+        if (!f.IsD()) {
+            ++faces;
+            for (int j = 0; j < 3; ++j)
+                used[std::size_t(f.cV(j) - &m.vert[0])] = 1;
+        }
+    const int vertices = int(std::count(used.begin(), used.end(), 1));
+    return vertices - int(edgeUse(m).size()) + faces;
+}
+
+// Every edge is used once in each direction: closed, manifold and consistently oriented.
+bool closedAndOriented(const TestMesh& m)
+{
+    std::vector<std::pair<int, int>> directed;
+    for (const auto& f : m.face)
+        if (!f.IsD())
+            for (int j = 0; j < 3; ++j)
+                directed.push_back({int(f.cV(j) - &m.vert[0]), int(f.cV((j + 1) % 3) - &m.vert[0])});
+    std::sort(directed.begin(), directed.end());
+    if (std::adjacent_find(directed.begin(), directed.end()) != directed.end())
+        return false;
+    for (const auto& e : directed)
+        if (!std::binary_search(directed.begin(), directed.end(), std::make_pair(e.second, e.first)))
+            return false;
+    return true;
+}
+
+bool logSays(const SimplifyStats& s, const std::string& what)
+{
+    return std::any_of(s.relaxed.begin(), s.relaxed.end(),
+                       [&](const std::string& line) { return line.find(what) != std::string::npos; });
+}
+
+}  // namespace
+
+TEST(TunnelCut, TheTestPlateIsAClosedSurfaceWithOneTunnel)
+{
+    TestMesh m;
+    makeDrilledPlate(m);
+    EXPECT_EQ(m.fn, 256);
+    EXPECT_TRUE(closedAndOriented(m));
+    EXPECT_EQ(eulerCharacteristic(m), 0);
+}
+
+// Without the cut the link condition keeps the hole open, and the plate stops far above a
+// far-field target; with it the plate reaches the target as a closed, oriented surface
+// without the tunnel, and says so.
+TEST(TunnelCut, DrilledPlateClosesItsHoleToReachTheTarget)
+{
+    for (bool close : {false, true}) {
+        TestMesh input, m;
+        makeDrilledPlate(input);
+        copyMesh(m, input);
+        SimplifyParams p = targetParams(12);
+        p.closeTunnels = close;
+        const SimplifyStats s = simplify(m, p);
+        vcg::tri::Allocator<TestMesh>::CompactEveryVector(m);
+        ASSERT_TRUE(s.ok) << s.message;
+        EXPECT_TRUE(closedAndOriented(m)) << close;
+        if (!close) {
+            EXPECT_GT(m.fn, 12);
+            EXPECT_EQ(eulerCharacteristic(m), 0);
+            EXPECT_EQ(s.closedTunnels, 0);
+            continue;
+        }
+        EXPECT_LE(m.fn, 12) << s.message;
+        EXPECT_EQ(eulerCharacteristic(m), 2);
+        EXPECT_EQ(s.closedTunnels, 1);
+        EXPECT_TRUE(logSays(s, "closed 1 tunnel")) << (s.relaxed.empty() ? "" : s.relaxed.front());
+        // A plain box is what is left: no farther from the plate than the hole is wide.
+        const SymmetricHausdorff h = symmetricHausdorff(m, input, 20000);
+        EXPECT_LT(h.max(), 1.5 * kHoleRadius) << h.max();
+    }
+}
+
+// A maximum error below the cap a cut would make keeps the tunnel; one above it lets it go.
+TEST(TunnelCut, NoWiderThanTheMaximumError)
+{
+    for (double bound : {0.2 * kHoleRadius, 3 * kHoleRadius}) {
+        TestMesh m;
+        makeDrilledPlate(m);
+        const double diagonal = liveDiagonal(m);
+        SimplifyParams p;
+        p.maxError = bound / diagonal;
+        const SimplifyStats s = simplify(m, p);
+        ASSERT_TRUE(s.ok) << s.message;
+        vcg::tri::Allocator<TestMesh>::CompactEveryVector(m);
+        EXPECT_TRUE(closedAndOriented(m));
+        if (bound < kHoleRadius) {
+            EXPECT_EQ(s.closedTunnels, 0);
+            EXPECT_EQ(eulerCharacteristic(m), 0);
+        } else {
+            EXPECT_EQ(s.closedTunnels, 1);
+            EXPECT_LE(s.widestTunnelCap, bound);
+            EXPECT_EQ(eulerCharacteristic(m), 2);
+        }
+    }
+}
