@@ -35,6 +35,8 @@ void addProtectionOptions(CLI::App& app, ProtectionArgs& a)
                  "Edges between colours (materials) are not features");
     app.add_flag("--no-boundary", a.noBoundary, "Open boundaries get no constraint quadrics");
     app.add_flag("--no-relax", a.noRelax, "Stop early rather than relax the shape guards or remove components");
+    app.add_flag("--keep-tunnels", a.keepTunnels,
+                 "Never cut and cap a tunnel (a through-hole) whose rim has shrunk to three edges");
 }
 
 void addExportOptions(CLI::App& app, ExportArgs& a)
@@ -91,6 +93,7 @@ void applyProtection(const ProtectionArgs& a, SimplifyParams& p)
     p.keepColorBorders = !a.noColorBorders;
     p.preserveBoundary = !a.noBoundary;
     p.relaxToReachTarget = !a.noRelax;
+    p.closeTunnels = !a.keepTunnels;
 }
 
 SaveSettings saveSettings(const ExportArgs& a)
@@ -121,7 +124,8 @@ nlohmann::json toJson(const ProtectionArgs& a)
 {
     return {{"featureAngle", a.featureAngle},   {"featurePenalty", a.featurePenalty},
             {"keepPartBorders", !a.noPartBorders}, {"keepColourBorders", !a.noColorBorders},
-            {"preserveBoundary", !a.noBoundary}, {"relaxToReachTarget", !a.noRelax}};
+            {"preserveBoundary", !a.noBoundary}, {"relaxToReachTarget", !a.noRelax},
+            {"closeTunnels", !a.keepTunnels}};
 }
 
 nlohmann::json toJson(const ExportArgs& a)

@@ -25,6 +25,7 @@ struct ProtectionArgs {
     bool noColorBorders = false;
     bool noBoundary = false;
     bool noRelax = false;
+    bool keepTunnels = false;
 };
 
 struct ExportArgs {

@@ -41,6 +41,8 @@ nlohmann::json simplifyStatsJson(const SimplifyStats& s)
             {"featureBreaks", s.featureBreaks},
             {"removedComponents", s.removedComponents},
             {"largestRemovedComponent", s.largestRemovedComponent},
+            {"closedTunnels", s.closedTunnels},
+            {"widestTunnelCap", s.widestTunnelCap},
             {"relaxed", s.relaxed},
             {"message", s.message}};
 }

@@ -55,6 +55,9 @@ void runSimplify(const SimplifyArgs& a)
         std::fprintf(stderr, "cadlod: %s: %d -> %d faces (stopped by %s), largest collapse error %.6g (%.4f%% diag)\n",
                      a.output.c_str(), stats.facesBefore, stats.facesAfter, stats.stoppedBy.c_str(),
                      stats.largestError, 100.0 * stats.largestErrorFraction());
+    if (!a.common.quiet)
+        for (const std::string& line : stats.relaxed)  // what gave way to reach the target
+            std::fprintf(stderr, "cadlod: %s\n", line.c_str());
 }
 
 }  // namespace

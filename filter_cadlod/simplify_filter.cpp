@@ -96,10 +96,10 @@ bool cadSimplify(MeshFilterInterface& plugin, MeshModel& m, const RichParameterL
     plugin.Log("Largest collapse error %.6g (%.5f%% of the bbox diagonal %.6g)", s.largestError,
                100 * s.largestErrorFraction(), s.diagonal);
     plugin.Log("Features: %d creases/part borders, %d boundary edges, %d non-manifold edges (locked); %d faces "
-               "repeating a vertex deleted; %d collapses broke a feature, %d parts removed whole; refused: %d flips, "
-               "%d shape, %d feature, %d error, %d topology",
+               "repeating a vertex deleted; %d collapses broke a feature, %d parts removed whole, %d tunnels closed; "
+               "refused: %d flips, %d shape, %d feature, %d error, %d topology",
                s.featureEdges, s.boundaryEdges, s.nonManifoldEdges, s.degenerateFaces, s.featureBreaks,
-               s.removedComponents, s.rejectedFlip, s.rejectedCompactness, s.rejectedFeature, s.rejectedError,
+               s.removedComponents, s.closedTunnels, s.rejectedFlip, s.rejectedCompactness, s.rejectedFeature, s.rejectedError,
                s.rejectedTopology);
     return true;
 }

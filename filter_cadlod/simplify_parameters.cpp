@@ -32,6 +32,8 @@ void addPlacementParameters(RichParameterList& par)
                            "Weight of the constraint quadrics of boundaries, creases and borders."));
     par.addParam(RichBool("preserveTopology", d.preserveTopology, "Preserve topology",
                           "Refuse collapses that change the genus or make the mesh non-manifold."));
+    par.addParam(RichBool("closeTunnels", d.closeTunnels, "Close tunnels",
+                          "With Preserve topology: a tunnel (a through-hole) whose rim has shrunk to three edges may be cut and capped, priced like a feature break (logged)."));
     par.addParam(RichBool("normalCheck", d.normalCheck, "Normal check",
                           "Refuse collapses that turn a face too far or against its input side; price like a feature break one that turns a face away from the input surface nearest to it."));
     par.addParam(RichFloat("normalThreshold", d.normalThreshold, "Normal threshold (degrees)",
@@ -65,6 +67,8 @@ void readPlacementParameters(const RichParameterList& par, SimplifyParams& p)
         p.boundaryWeight = par.getFloat("boundaryWeight");
     if (par.hasParameter("preserveTopology"))
         p.preserveTopology = par.getBool("preserveTopology");
+    if (par.hasParameter("closeTunnels"))
+        p.closeTunnels = par.getBool("closeTunnels");
     if (par.hasParameter("normalCheck"))
         p.normalCheck = par.getBool("normalCheck");
     if (par.hasParameter("normalThreshold"))

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
@@ -107,6 +109,60 @@ TEST(CliOutputs, SimplifyWritesPlyObjStlAndReportMeasuresIt)
     EXPECT_GT(r.at("hausdorffMaxPercentDiag").get<double>(), 0.0);
     EXPECT_LT(r.at("hausdorffMaxPercentDiag").get<double>(), 5.0);
     EXPECT_TRUE(r.contains("compactnessAfter"));
+}
+
+// A 40 x 40 x 2 plate drilled through (radius 4) as an ASCII PLY: each flat face a strip
+// between the square outline and the hole's rim, 32 points on each; a closed surface of
+// genus 1.
+void writeDrilledPlatePly(const std::string& path)
+{
+    const int n = 32;
+    std::ofstream out(path);
+    out << "ply\nformat ascii 1.0\nelement vertex " << 4 * n << "\nproperty float x\nproperty float y\n"
+        << "property float z\nelement face " << 8 * n << "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (double z : {0.0, 2.0})
+        for (bool square : {true, false})
+            for (int j = 0; j < n; ++j) {
+                const double t = 2 * M_PI * j / n, c = std::cos(t), s = std::sin(t);
+                const double r = square ? 20 / std::max(std::abs(c), std::abs(s)) : 4;
+                out << r * c << ' ' << r * s << ' ' << z << '\n';
+            }
+    auto ring = [&](bool top, bool square) { return (top ? 2 * n : 0) + (square ? 0 : n); };
+    auto band = [&](int a, int c) {
+        for (int j = 0; j < n; ++j) {
+            const int k = (j + 1) % n;
+            out << "3 " << a + j << ' ' << a + k << ' ' << c + k << "\n3 " << a + j << ' ' << c + k << ' ' << c + j << '\n';
+        }
+    };
+    band(ring(true, true), ring(true, false));    // top
+    band(ring(false, false), ring(false, true));  // bottom
+    band(ring(false, true), ring(true, true));    // sides
+    band(ring(true, false), ring(false, false));  // the hole's wall
+}
+
+int trianglesOf(const std::string& path)
+{
+    const CliRun info = runCadlod({"info", path});
+    const std::size_t at = info.stdoutText.find("triangles");
+    return at == std::string::npos ? -1 : std::stoi(info.stdoutText.substr(at + 9));
+}
+
+// Far below what its hole allows, a drilled plate gets there by closing the hole, and the
+// command says so; --keep-tunnels keeps the hole and stops above the target.
+TEST(CliOutputs, SimplifyClosesATunnelUnlessToldToKeepIt)
+{
+    const std::string dir = freshDirectory("drilled");
+    writeDrilledPlatePly(dir + "/plate.ply");
+    ASSERT_EQ(trianglesOf(dir + "/plate.ply"), 256);
+    const CliRun closed = runCadlod({"simplify", dir + "/plate.ply", "-o", dir + "/closed.ply", "--faces", "12"});
+    ASSERT_EQ(closed.exitCode, 0) << closed.stderrText;
+    EXPECT_LE(trianglesOf(dir + "/closed.ply"), 12);
+    EXPECT_NE(closed.stderrText.find("closed 1 tunnel"), std::string::npos) << closed.stderrText;
+    const CliRun kept =
+        runCadlod({"simplify", dir + "/plate.ply", "-o", dir + "/kept.ply", "--faces", "12", "--keep-tunnels"});
+    ASSERT_EQ(kept.exitCode, 0) << kept.stderrText;
+    EXPECT_GT(trianglesOf(dir + "/kept.ply"), 12);
+    EXPECT_EQ(kept.stderrText.find("tunnel"), std::string::npos) << kept.stderrText;
 }
 
 TEST(CliOutputs, InfoListsTheLevelsOfAnOpenFlightFile)
