@@ -4,6 +4,7 @@
 #include "flt_reader.h"
 #include "lod_model_to_mesh.h"
 #include "mesh_to_lod_model.h"
+#include "obj_reader.h"
 #include "output_file.h"
 #include "progress_bar.h"
 #include "scene_to_mesh.h"
@@ -13,7 +14,6 @@
 #include <wrap/io_trimesh/export_obj.h>
 #include <wrap/io_trimesh/export_ply.h>
 #include <wrap/io_trimesh/export_stl.h>
-#include <wrap/io_trimesh/import_obj.h>
 #include <wrap/io_trimesh/import_ply.h>
 #include <wrap/io_trimesh/import_stl.h>
 
@@ -95,14 +95,9 @@ LoadedMesh loadWithVcg(const std::string& path, CoreMesh& m, InputFormat format,
 
 LoadedMesh loadObj(const std::string& path, CoreMesh& m)
 {
-    using Importer = vcg::tri::io::ImporterOBJ<CoreMesh>;
-    Importer::Info oi;
-    const int rc = Importer::Open(m, path.c_str(), oi);
-    if (rc != 0 && Importer::ErrorCritical(rc))
-        throw InputError(path + ": " + Importer::ErrorMsg(rc));
     LoadedMesh info;
     info.format = InputFormat::Obj;
-    info.parts = 1;
+    info.parts = readObjFile(path, m);
     return info;
 }
 

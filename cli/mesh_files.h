@@ -1,6 +1,6 @@
 // Reading any input the command line accepts into a cadlod::CoreMesh (VRML 97/1.0, plain
-// or gzip; OpenFlight, finest level; PLY/OBJ/STL through vcglib) and writing a mesh as
-// PLY/OBJ/STL (vcglib) or a one-level OpenFlight file.
+// or gzip; OpenFlight, finest level; OBJ with our obj_reader.h; PLY/STL through vcglib)
+// and writing a mesh as PLY/OBJ/STL (vcglib) or a one-level OpenFlight file.
 #pragma once
 #include "core_mesh.h"
 #include "flt_writer.h"
