@@ -42,6 +42,8 @@ void addPlacementParameters(RichParameterList& par)
                            "No new triangle less compact than this unless it was worse already (0: off)."));
     par.addParam(RichFloat("qualityThreshold", d.qualityThreshold, "Quality threshold",
                            "Free collapses making triangles less compact than this wait longer."));
+    par.addParam(RichFloat("largeFaceWeight", d.largeFaceWeight, "Large-face weight",
+                           "Share of a face's full area added to the nearly equal weight every face's plane gets: large faces (a plate's top) keep their place. 0: all faces weigh the same."));
     par.addParam(RichBool("planarQuadric", d.planarQuadric, "Planar quadrics",
                           "Tiny extra quadrics on every edge: steadier flat regions."));
     par.addParam(RichBool("relaxToReachTarget", d.relaxToReachTarget, "Reach the target",
@@ -77,6 +79,8 @@ void readPlacementParameters(const RichParameterList& par, SimplifyParams& p)
         p.minCompactness = par.getFloat("minCompactness");
     if (par.hasParameter("qualityThreshold"))
         p.qualityThreshold = par.getFloat("qualityThreshold");
+    if (par.hasParameter("largeFaceWeight"))
+        p.largeFaceWeight = par.getFloat("largeFaceWeight");
     if (par.hasParameter("planarQuadric"))
         p.planarQuadric = par.getBool("planarQuadric");
     if (par.hasParameter("keepPartBorders"))

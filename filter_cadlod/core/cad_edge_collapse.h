@@ -577,7 +577,7 @@ private:
         double minCost = std::numeric_limits<double>::max();
         for (int i = 0; i < count; ++i)
             minCost = std::min(minCost, cand[i].cost);
-        return priorityOf(ctx, minCost, ctx.quadrics.area(v0) + ctx.quadrics.area(v1), 1.0);
+        return priorityOf(ctx, minCost, ctx.quadrics.cappedArea(v0) + ctx.quadrics.cappedArea(v1), 1.0);
     }
 
     // The candidates a collapse may use, ranked. Features are not locks but prices: a
@@ -691,7 +691,8 @@ private:
             return reject(stats.rejectedError);
         const double qualityThr = ctx.params.qualityThreshold;
         const double shape = qualityThr > 0 ? std::clamp(bestScore.meanCompactness / qualityThr, 0.02, 1.0) : 1.0;
-        this->_priority = priorityOf(ctx, cand[best].ranked, area, shape);
+        this->_priority =
+            priorityOf(ctx, cand[best].ranked, ctx.quadrics.cappedArea(v0) + ctx.quadrics.cappedArea(v1), shape);
     }
 
     vcg::Point3<ScalarType> target_;

@@ -1,6 +1,6 @@
 // Per-vertex error quadrics for the CAD edge collapse (Garland–Heckbert):
 //  - every face adds its plane to its three vertices, all with about the same weight (see
-//    kAreaCapOfMean);
+//    kAreaCapOfMean), plus a share of their area (QuadricWeights::areaShare);
 //  - every feature edge (boundary, crease, part border) adds, for each face along it, the
 //    plane through the edge perpendicular to that face, weighted by boundaryWeight × the
 //    face's (capped) area, so that moving the edge sideways by d costs what moving that face off
@@ -44,6 +44,7 @@ inline Quadric planeQuadric(const vcg::Point3d& n, double d, double weight)
 struct QuadricWeights {
     double feature = 1.0;   // constraint planes of feature edges
     double planar = 0.0;    // constraint planes of the other edges (0: none)
+    double areaShare = 0.0; // a face weighs its capped area plus this share of its full area
 };
 
 template <class VertexType>
@@ -58,6 +59,7 @@ public:
         zero.SetZero();
         quadric_.assign(m.vert.size(), zero);
         area_.assign(m.vert.size(), 0.0);
+        cappedArea_.assign(m.vert.size(), 0.0);
         areaCap_ = kAreaCapOfMean * meanFaceArea(m);
         for (auto& f : m.face)
             if (!f.IsD())
@@ -68,12 +70,17 @@ public:
     double& area(const VertexType* v) { return area_[v - base_]; }
     const Quadric& quadric(const VertexType* v) const { return quadric_[v - base_]; }
     double area(const VertexType* v) const { return area_[v - base_]; }
+    // The capped weights alone (about one per face merged into v): what orders free
+    // collapses, which move no plane, so that a large face's share does not hold them back.
+    double& cappedArea(const VertexType* v) { return cappedArea_[v - base_]; }
+    double cappedArea(const VertexType* v) const { return cappedArea_[v - base_]; }
 
     // v1 survives a collapse of v0 into it.
     void merge(const VertexType* v0, const VertexType* v1)
     {
         quadric(v1) += quadric(v0);
         area(v1) += area(v0);
+        cappedArea(v1) += cappedArea(v0);
     }
 
     // One more plane through v (a tunnel's cap), weighted by `area` as a face's plane is.
@@ -82,9 +89,13 @@ public:
         const double weight = std::min(area, areaCap_);
         quadric(v) += planeQuadric(unitNormal, offset, weight);
         this->area(v) += weight;
+        cappedArea(v) += weight;
     }
 
-    std::size_t bytes() const { return quadric_.capacity() * sizeof(Quadric) + area_.capacity() * sizeof(double); }
+    std::size_t bytes() const
+    {
+        return quadric_.capacity() * sizeof(Quadric) + (area_.capacity() + cappedArea_.capacity()) * sizeof(double);
+    }
 
 private:
     // Face weights are areas capped at 1 % of the mean face area, so nearly every plane
@@ -124,11 +135,13 @@ private:
         if (!(doubleArea > 0) || !std::isfinite(doubleArea))
             return;
         n /= doubleArea;
-        const double area = std::min(0.5 * doubleArea, areaCap_);
+        const double capped = std::min(0.5 * doubleArea, areaCap_);
+        const double area = capped + w.areaShare * 0.5 * doubleArea;
         const Quadric q = planeQuadric(n, n * p[0], area);
         for (int j = 0; j < 3; ++j) {
             quadric(f.V(j)) += q;
             area_[f.V(j) - base_] += area;
+            cappedArea_[f.V(j) - base_] += capped;
         }
         for (int j = 0; j < 3; ++j) {
             const double weight = isFeatureEdge(f, j) ? w.feature : w.planar;
@@ -155,6 +168,7 @@ private:
     const VertexType* base_ = nullptr;
     double areaCap_ = 0.0;
     std::vector<Quadric> quadric_;
+    std::vector<double> cappedArea_;
     std::vector<double> area_;
 };
 

@@ -222,6 +222,10 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // that ends up nearer the part's far side is within that error of it. The input-surface
     // check (input_surface.h) would only keep thin parts (a chip's leads) heavy in every level.
     params.facingCheck = false;
+    // A level's budget is a Hausdorff distance, which the same weight for every face reaches
+    // with fewer faces; large faces weighing more serve shading at a fixed face count.
+    params.largeFaceWeight = 0.0;
+    params.minCompactness = 0.05;
     SimplifyStats stats;
     stats.facesBefore = working.fn;
     std::string why;

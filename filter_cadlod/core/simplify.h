@@ -37,8 +37,9 @@ inline bool validateParams(const SimplifyParams& p, std::string& why)
         why = "reduction must be 0..100 %, target faces and max error not negative";
     else if (!(p.featureAngle >= 0 && p.featureAngle <= 180) || !(p.normalThreshold > 0 && p.normalThreshold <= 180))
         why = "feature angle must be 0..180 degrees, normal threshold 0..180 degrees";
-    else if (p.tieTolerance < 0 || p.flatTolerance < 0 || p.boundaryWeight < 0 || p.minCompactness < 0)
-        why = "tolerances, boundary weight and minimum compactness must not be negative";
+    else if (p.tieTolerance < 0 || p.flatTolerance < 0 || p.boundaryWeight < 0 || p.minCompactness < 0 ||
+             p.largeFaceWeight < 0)
+        why = "tolerances, boundary weight, minimum compactness and large-face weight must not be negative";
     else
         return true;
     return false;
@@ -221,6 +222,7 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     QuadricWeights weights;
     weights.feature = params.boundaryWeight;
     weights.planar = params.planarQuadric ? 1e-3 : 0.0;
+    weights.areaShare = params.largeFaceWeight;
     ctx.quadrics.init(m, weights, [&](FaceType& f, int j) { return f.IsUserBit(ctx.bits.edge[j]); });
     ctx.storeInputNormals(m);
     if (params.normalCheck && params.facingCheck) {

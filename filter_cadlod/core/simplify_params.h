@@ -41,9 +41,17 @@ struct SimplifyParams {
     bool facingCheck = true;         // with normalCheck: a collapse leaving a face turned over 90° from
                                      // the input surface nearest to it is ranked like a feature break
                                      // (input_surface.h); off in the far field (under 5 % of the faces)
-    double minCompactness = 0.05;    // never create a face below this unless it improves the worst;
+    double minCompactness = 0.1;     // never create a face below this unless it improves the worst;
                                      // free collapses not below max(0.1, this); 0: no guard
     double qualityThreshold = 0.3;   // free collapses leaving faces below this compactness wait longer
+    // Quadric weights: every face weighs about the same (its area capped at 1 % of the mean
+    // face area, cad_quadrics.h) plus this share of its full area. The capped weights alone
+    // make a plate's large top face count as little as a fillet's sliver: moving a plate corner
+    // by the plate's thickness then costs as little as a tiny collapse on the fillet, and far
+    // reductions tilt plates into wedges a viewer sees over the whole face. A small share keeps
+    // small faces' planes weighing about the same (a face of mean area weighs 1.5 caps) while a
+    // face 100 times the mean weighs 51. Chosen on the corpus for shading (docs/benchmarks.md).
+    double largeFaceWeight = 0.005;
     bool planarQuadric = false;      // tiny edge quadrics everywhere: steadier flat regions
     bool keepPartBorders = true;     // edges between faces of different cadlod_part ids are features
     bool keepColorBorders = true;    // edges between faces of different colours (materials) are features

@@ -355,6 +355,7 @@ private:
         ++m.vn;
         ctx.quadrics.quadric(v) = ctx.quadrics.quadric(like);
         ctx.quadrics.area(v) = ctx.quadrics.area(like);
+        ctx.quadrics.cappedArea(v) = ctx.quadrics.cappedArea(like);
         return v;
     }
 
