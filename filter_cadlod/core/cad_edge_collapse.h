@@ -577,7 +577,7 @@ private:
         double minCost = std::numeric_limits<double>::max();
         for (int i = 0; i < count; ++i)
             minCost = std::min(minCost, cand[i].cost);
-        return priorityOf(ctx, minCost, ctx.quadrics.cappedArea(v0) + ctx.quadrics.cappedArea(v1), 1.0);
+        return priorityOf(ctx, minCost, ctx.quadrics.cappedArea(v0, v1), 1.0);
     }
 
     // The candidates a collapse may use, ranked. Features are not locks but prices: a
@@ -621,7 +621,7 @@ private:
             return reject(stats.rejectedTopology);  // would delete a whole component
 
         const Quadric q = mergedQuadric(ctx);
-        const double area = ctx.quadrics.area(v0) + ctx.quadrics.area(v1);
+        const double area = double(ctx.quadrics.area(v0)) + double(ctx.quadrics.area(v1));
         // A corner (a crease end, or where creases meet) keeps its place, and so does any
         // feature vertex when the edge leaves its feature: it is pinned. Along a crease the
         // new vertex may move (interior points, the optimum): the crease's constraint planes
@@ -692,7 +692,7 @@ private:
         const double qualityThr = ctx.params.qualityThreshold;
         const double shape = qualityThr > 0 ? std::clamp(bestScore.meanCompactness / qualityThr, 0.02, 1.0) : 1.0;
         this->_priority =
-            priorityOf(ctx, cand[best].ranked, ctx.quadrics.cappedArea(v0) + ctx.quadrics.cappedArea(v1), shape);
+            priorityOf(ctx, cand[best].ranked, ctx.quadrics.cappedArea(v0, v1), shape);
     }
 
     vcg::Point3<ScalarType> target_;

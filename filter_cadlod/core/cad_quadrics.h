@@ -58,8 +58,8 @@ public:
         Quadric zero;
         zero.SetZero();
         quadric_.assign(m.vert.size(), zero);
-        area_.assign(m.vert.size(), 0.0);
-        cappedArea_.assign(m.vert.size(), 0.0);
+        area_.assign(m.vert.size(), 0.0f);
+        cappedArea_.assign(m.vert.size(), 0.0f);
         areaCap_ = kAreaCapOfMean * meanFaceArea(m);
         for (auto& f : m.face)
             if (!f.IsD())
@@ -67,13 +67,19 @@ public:
     }
 
     Quadric& quadric(const VertexType* v) { return quadric_[v - base_]; }
-    double& area(const VertexType* v) { return area_[v - base_]; }
+    float& area(const VertexType* v) { return area_[v - base_]; }
     const Quadric& quadric(const VertexType* v) const { return quadric_[v - base_]; }
     double area(const VertexType* v) const { return area_[v - base_]; }
     // The capped weights alone (about one per face merged into v): what orders free
     // collapses, which move no plane, so that a large face's share does not hold them back.
-    double& cappedArea(const VertexType* v) { return cappedArea_[v - base_]; }
+    float& cappedArea(const VertexType* v) { return cappedArea_[v - base_]; }
     double cappedArea(const VertexType* v) const { return cappedArea_[v - base_]; }
+    // The capped weights of an edge's ends, the same sum wherever it is taken (the lazy
+    // bound and the full evaluation must agree to the last bit).
+    double cappedArea(const VertexType* v0, const VertexType* v1) const
+    {
+        return double(cappedArea_[v0 - base_]) + double(cappedArea_[v1 - base_]);
+    }
 
     // v1 survives a collapse of v0 into it.
     void merge(const VertexType* v0, const VertexType* v1)
@@ -94,7 +100,7 @@ public:
 
     std::size_t bytes() const
     {
-        return quadric_.capacity() * sizeof(Quadric) + (area_.capacity() + cappedArea_.capacity()) * sizeof(double);
+        return quadric_.capacity() * sizeof(Quadric) + (area_.capacity() + cappedArea_.capacity()) * sizeof(float);
     }
 
 private:
@@ -168,8 +174,9 @@ private:
     const VertexType* base_ = nullptr;
     double areaCap_ = 0.0;
     std::vector<Quadric> quadric_;
-    std::vector<double> cappedArea_;
-    std::vector<double> area_;
+    // Sums of weights, in float: 8 bytes a vertex, where the quadrics take 80.
+    std::vector<float> cappedArea_;
+    std::vector<float> area_;
 };
 
 }  // namespace cadlod
