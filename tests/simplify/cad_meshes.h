@@ -87,6 +87,18 @@ struct RevolveSpec {
     double keywayZ0 = 0, keywayZ1 = 0;
 };
 
+// The band of triangles between two closed rings of as many points, two per segment, facing
+// the side from which ring `a` runs counter-clockwise with `c` beyond it.
+inline void ringBand(CadBuilder& b, const std::vector<int>& a, const std::vector<int>& c)
+{
+    const int n = int(a.size());
+    for (int j = 0; j < n; ++j) {
+        const int k = (j + 1) % n;
+        b.addTriangle(a[j], a[k], c[k]);
+        b.addTriangle(a[j], c[k], c[j]);
+    }
+}
+
 // Surface of revolution of a profile (z increasing along the part, r = 0 closes with a
 // fan). Returns the index of the first point added.
 inline int revolve(CadBuilder& b, const std::vector<ProfilePoint>& profile, const RevolveSpec& spec)
@@ -109,13 +121,7 @@ inline int revolve(CadBuilder& b, const std::vector<ProfilePoint>& profile, cons
         }
         return ring;
     };
-    auto band = [&](const std::vector<int>& a, const std::vector<int>& c) {
-        for (int j = 0; j < n; ++j) {
-            const int k = (j + 1) % n;
-            b.addTriangle(a[j], a[k], c[k]);
-            b.addTriangle(a[j], c[k], c[j]);
-        }
-    };
+    auto band = [&](const std::vector<int>& a, const std::vector<int>& c) { ringBand(b, a, c); };
     std::vector<int> previous = addRing(profile[0].z, profile[0].r);
     for (std::size_t i = 1; i < profile.size(); ++i) {
         const ProfilePoint& p0 = profile[i - 1];
@@ -213,13 +219,7 @@ inline int drilledPlate(CadBuilder& b, double side, double thickness, double hol
         }
         return r;
     };
-    auto band = [&](const std::vector<int>& a, const std::vector<int>& c) {
-        for (int j = 0; j < segments; ++j) {
-            const int k = (j + 1) % segments;
-            b.addTriangle(a[j], a[k], c[k]);
-            b.addTriangle(a[j], c[k], c[j]);
-        }
-    };
+    auto band = [&](const std::vector<int>& a, const std::vector<int>& c) { ringBand(b, a, c); };
     const std::vector<int> outerBottom = ring(0, true), outerTop = ring(thickness, true);
     const std::vector<int> rimBottom = ring(0, false), rimTop = ring(thickness, false);
     band(outerTop, rimTop);        // top face, facing +z
