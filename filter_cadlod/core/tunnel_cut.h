@@ -19,6 +19,7 @@
 #pragma once
 
 #include "cad_edge_collapse.h"
+#include "components.h"
 #include "layer_metadata.h"
 
 #include <vcg/complex/algorithms/local_optimization.h>
@@ -41,37 +42,18 @@ namespace detail {
 template <class MeshType>
 int tunnelCount(MeshType& m)
 {
-    using FaceType = typename MeshType::FaceType;
-    std::vector<char> faceSeen(m.face.size(), 0), vertexSeen(m.vert.size(), 0);
-    std::vector<FaceType*> stack;
+    std::vector<char> seen(m.vert.size(), 0);
     int tunnels = 0;
-    for (std::size_t i = 0; i < m.face.size(); ++i) {
-        if (m.face[i].IsD() || faceSeen[i])
-            continue;
-        long vertices = 0, faces = 0;
-        faceSeen[i] = 1;
-        stack.assign(1, &m.face[i]);
-        while (!stack.empty()) {
-            FaceType* f = stack.back();
-            stack.pop_back();
-            ++faces;
+    for (const Component<MeshType>& c : connectedComponents(m)) {
+        long vertices = 0;
+        for (const auto* f : c.faces)
             for (int j = 0; j < 3; ++j) {
-                char& seen = vertexSeen[std::size_t(f->V(j) - &m.vert[0])];
-                if (seen)
-                    continue;
-                seen = 1;
-                ++vertices;
-                for (vcg::face::VFIterator<FaceType> vfi(f->V(j)); !vfi.End(); ++vfi) {
-                    char& s = faceSeen[std::size_t(vfi.F() - &m.face[0])];
-                    if (!s && !vfi.F()->IsD()) {
-                        s = 1;
-                        stack.push_back(vfi.F());
-                    }
-                }
+                char& s = seen[std::size_t(f->cV(j) - &m.vert[0])];
+                vertices += !s;
+                s = 1;
             }
-        }
-        const long twiceGenusTimesTwo = 4 - 2 * vertices + faces;  // 2 - χ = 2g, times 2
-        tunnels += int(std::max(0L, twiceGenusTimesTwo / 4));
+        const long twiceTwoMinusChi = 4 - 2 * vertices + long(c.faces.size());  // 2 - χ = 2g, times 2
+        tunnels += int(std::max(0L, twiceTwoMinusChi / 4));
     }
     return tunnels;
 }
@@ -120,7 +102,8 @@ public:
     {
         if (!ctx.heap || ctx.spareVertices.size() < 3 || ctx.spareFaces.size() < 2)
             return;
-        TunnelCut* best = nullptr;
+        VertexType* best = nullptr;
+        ScalarType bestPriority = 0;
         for (VertexType* c : loopsThrough(a, b)) {
             Loop loop;
             if (!trace({a, b, c}, ctx, loop) || (ctx.maxErrorAbs > 0 && loop.inradius > ctx.maxErrorAbs))
@@ -128,13 +111,13 @@ public:
             const double weight = (ctx.quadrics.area(a) + ctx.quadrics.area(b) + ctx.quadrics.area(c)) / 3.0;
             const double cost = std::max(1.0, ctx.params.featurePenalty) * weight * loop.inradius * loop.inradius;
             const auto priority = ScalarType(ctx.priority(cost, weight, 1.0));
-            if (!best || priority < best->priority_) {
-                delete best;
-                best = new TunnelCut({a, b, c}, ctx.mark, priority);
+            if (!best || priority < bestPriority) {
+                best = c;
+                bestPriority = priority;
             }
         }
         if (best) {
-            ctx.heap->push_back(HeapElem(best));
+            ctx.heap->push_back(HeapElem(new TunnelCut({a, b, best}, ctx.mark, bestPriority)));
             std::push_heap(ctx.heap->begin(), ctx.heap->end());
         }
     }
@@ -152,23 +135,21 @@ public:
         return true;
     }
 
-    // The faces around the loop may have changed since the offer (a neighbour collapsed).
-    // A loop that separates its surface is no tunnel: cutting it would only split off a
-    // piece, which the collapses squeeze and removals take anyway.
+    // The faces around the loop may have changed since the offer (a neighbour collapsed), so
+    // it is traced again; Execute, which follows at once, cuts along that trace. A loop that
+    // separates its surface is no tunnel: cutting it would only split off a piece, which the
+    // collapses squeeze and removals take anyway.
     bool IsFeasible(vcg::BaseParameterClass* pp) override
     {
         Context& ctx = *static_cast<Context*>(pp);
-        Loop loop;
-        return ctx.spareVertices.size() >= 3 && ctx.spareFaces.size() >= 2 && trace(loop_, ctx, loop) &&
-               !separates(loop);
+        return ctx.spareVertices.size() >= 3 && ctx.spareFaces.size() >= 2 && trace(loop_, ctx, traced_) &&
+               !separates(traced_);
     }
 
     void Execute(MeshType& m, vcg::BaseParameterClass* pp) override
     {
         Context& ctx = *static_cast<Context*>(pp);
-        Loop loop;
-        if (!trace(loop_, ctx, loop))
-            return;
+        const Loop& loop = traced_;
         // The left side (the faces holding the loop's edges in its direction) moves to
         // copies of the loop's vertices; each side gets a cap facing away from it.
         for (int i = 0; i < 3; ++i) {
@@ -176,8 +157,9 @@ public:
             for (const Corner& c : loop.left[i])
                 moveCorner(c, copies_[i]);
         }
-        FaceType* leftCap = takeFace(m, ctx, *loop.left[0].front().first, {copies_[0], copies_[2], copies_[1]});
-        FaceType* rightCap = takeFace(m, ctx, *loop.right[0].front().first, {loop_[0], loop_[1], loop_[2]});
+        FaceType* leftCap =
+            takeFace(m, ctx, *loop.left[0].front().first, {copies_[0], copies_[2], copies_[1]}, -loop.normal);
+        FaceType* rightCap = takeFace(m, ctx, *loop.right[0].front().first, {loop_[0], loop_[1], loop_[2]}, loop.normal);
         capQuadrics(ctx, loop, *leftCap, *rightCap);
 
         const int mark = ++ctx.mark;
@@ -360,8 +342,9 @@ private:
     }
 
     // A spare face, alive again with the corners `v` and the attributes of `like` (colour,
-    // part), no feature edge.
-    static FaceType* takeFace(MeshType& m, Context& ctx, FaceType& like, std::array<VertexType*, 3> v)
+    // part), no feature edge; `normal`: its unit normal.
+    static FaceType* takeFace(MeshType& m, Context& ctx, FaceType& like, std::array<VertexType*, 3> v,
+                              const vcg::Point3d& normal)
     {
         FaceType* f = ctx.spareFaces.back();
         ctx.spareFaces.pop_back();
@@ -381,9 +364,7 @@ private:
             part[f] = part[&like];
         }
         const std::size_t index = std::size_t(f - ctx.faceBase);
-        const vcg::Point3d n = (vcg::Point3d::Construct(v[1]->cP()) - vcg::Point3d::Construct(v[0]->cP())) ^
-                               (vcg::Point3d::Construct(v[2]->cP()) - vcg::Point3d::Construct(v[0]->cP()));
-        ctx.inputNormal[index] = vcg::Point3f::Construct(n / n.Norm());
+        ctx.inputNormal[index] = vcg::Point3f::Construct(normal);
         if (ctx.surface)
             ctx.surface->adopt(index, std::size_t(&like - ctx.faceBase));
         return f;
@@ -399,6 +380,7 @@ private:
     }
 
     std::array<VertexType*, 3> loop_;
+    Loop traced_;                         // by IsFeasible, for Execute
     std::array<VertexType*, 3> copies_{};
     int madeAt_;
     ScalarType priority_;
