@@ -99,8 +99,8 @@ bool cadSimplify(MeshFilterInterface& plugin, MeshModel& m, const RichParameterL
                "repeating a vertex deleted; %d collapses broke a feature, %d parts removed whole, %d tunnels closed; "
                "refused: %d flips, %d shape, %d feature, %d error, %d topology",
                s.featureEdges, s.boundaryEdges, s.nonManifoldEdges, s.degenerateFaces, s.featureBreaks,
-               s.removedComponents, s.closedTunnels, s.rejectedFlip, s.rejectedCompactness, s.rejectedFeature, s.rejectedError,
-               s.rejectedTopology);
+               s.removedComponents, s.closedTunnels, s.rejectedFlip, s.rejectedCompactness, s.rejectedFeature,
+               s.rejectedError, s.rejectedTopology);
     return true;
 }
 

@@ -333,12 +333,12 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
         fillHeap();
     }
     ctx.heap = nullptr;
-    if (stats.closedTunnels > tunnelsBefore) {
+    if (const int closed = stats.closedTunnels - tunnelsBefore; closed > 0) {
         char line[200];
         std::snprintf(line, sizeof line,
                       "closed %d tunnel%s (cut where the rim had shrunk to three edges, and capped), the widest cap "
                       "%.4g %% of the diagonal",
-                      stats.closedTunnels - tunnelsBefore, stats.closedTunnels - tunnelsBefore == 1 ? "" : "s", ctx.diagonal > 0 ? 100 * stats.widestTunnelCap / ctx.diagonal : 0.0);
+                      closed, closed == 1 ? "" : "s", ctx.diagonal > 0 ? 100 * stats.widestTunnelCap / ctx.diagonal : 0.0);
         stats.relaxed.push_back(line);
     }
     if (ctx.facingGaveWay)
