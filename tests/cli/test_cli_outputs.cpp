@@ -1,13 +1,12 @@
 // Outputs: never over an existing file without --force; a run killed while writing leaves
 // no truncated output; simplify/report/info on PLY/OBJ/STL.
+#include "cad_meshes.h"
 #include "cli_runner.h"
 #include "flt_reader.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
-#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
@@ -111,33 +110,20 @@ TEST(CliOutputs, SimplifyWritesPlyObjStlAndReportMeasuresIt)
     EXPECT_TRUE(r.contains("compactnessAfter"));
 }
 
-// A 40 x 40 x 2 plate drilled through (radius 4) as an ASCII PLY: each flat face a strip
-// between the square outline and the hole's rim, 32 points on each; a closed surface of
-// genus 1.
+// The simplifier tests' drilled plate (40 x 40 x 2, a hole of radius 4, 32 points per ring:
+// a closed surface of genus 1) as an ASCII PLY.
 void writeDrilledPlatePly(const std::string& path)
 {
-    const int n = 32;
+    CadBuilder b;
+    drilledPlate(b, 40, 2, 4, 32);
     std::ofstream out(path);
-    out << "ply\nformat ascii 1.0\nelement vertex " << 4 * n << "\nproperty float x\nproperty float y\n"
-        << "property float z\nelement face " << 8 * n << "\nproperty list uchar int vertex_indices\nend_header\n";
-    for (double z : {0.0, 2.0})
-        for (bool square : {true, false})
-            for (int j = 0; j < n; ++j) {
-                const double t = 2 * M_PI * j / n, c = std::cos(t), s = std::sin(t);
-                const double r = square ? 20 / std::max(std::abs(c), std::abs(s)) : 4;
-                out << r * c << ' ' << r * s << ' ' << z << '\n';
-            }
-    auto ring = [&](bool top, bool square) { return (top ? 2 * n : 0) + (square ? 0 : n); };
-    auto band = [&](int a, int c) {
-        for (int j = 0; j < n; ++j) {
-            const int k = (j + 1) % n;
-            out << "3 " << a + j << ' ' << a + k << ' ' << c + k << "\n3 " << a + j << ' ' << c + k << ' ' << c + j << '\n';
-        }
-    };
-    band(ring(true, true), ring(true, false));    // top
-    band(ring(false, false), ring(false, true));  // bottom
-    band(ring(false, true), ring(true, true));    // sides
-    band(ring(true, false), ring(false, false));  // the hole's wall
+    out << "ply\nformat ascii 1.0\nelement vertex " << b.points.size() << "\nproperty float x\nproperty float y\n"
+        << "property float z\nelement face " << b.triangles.size()
+        << "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (const auto& p : b.points)
+        out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    for (const auto& t : b.triangles)
+        out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
 }
 
 int trianglesOf(const std::string& path)
