@@ -291,6 +291,40 @@ bool relaxShapeGuards(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
 // Flips of a face against itself (cad_edge_collapse.h's normal checks), the link condition
 // on collapses (no collapse changes the topology: only a priced cut does) and locked
 // (non-manifold) vertices never give way.
+namespace detail {
+
+// One run of the heap until the session's goal, as vcglib's DoOptimization does it (the
+// same pops, the same dropping of stale entries once the heap outgrows the mesh), but
+// ending where that dropping leaves the heap empty: vcglib then pops from the empty heap
+// (read before its start), which a far-field session whose last entries were all stale
+// reached (the LOD chain of a KUKA robot). Returns whether entries are left.
+template <class MeshType>
+bool runHeap(vcg::LocalOptimization<MeshType>& session)
+{
+    auto& heap = session.h;
+    session.nPerformedOps = 0;
+    while (!session.GoalReached() && !heap.empty()) {
+        if (heap.size() > session.m.SimplexNumber() * session.HeapSimplexRatio) {
+            session.ClearHeap();
+            if (heap.empty())
+                break;
+        }
+        std::pop_heap(heap.begin(), heap.end());
+        auto* operation = heap.back().locModPtr;
+        session.currMetric = heap.back().pri;
+        heap.pop_back();
+        if (operation->IsUpToDate() && operation->IsFeasible(session.pp)) {
+            ++session.nPerformedOps;
+            operation->Execute(session.m, session.pp);
+            operation->UpdateHeap(heap, session.pp);
+        }
+        delete operation;
+    }
+    return !heap.empty();
+}
+
+}  // namespace detail
+
 template <class MeshType>
 void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats, vcg::CallBackPos* progress)
 {
@@ -318,7 +352,7 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
     int collapsesSinceInit = 0;
     const int tunnelsBefore = stats.closedTunnels;
     while (m.fn > stats.targetFaces) {
-        const bool heapLeft = session.DoOptimization();
+        const bool heapLeft = detail::runHeap(session);
         stats.collapses += session.nPerformedOps;
         collapsesSinceInit += session.nPerformedOps;
         if (progress)
