@@ -114,6 +114,19 @@ public:
         return hint >= 0 ? faces_[std::size_t(hint)] : nullptr;
     }
 
+    // Whether some face lies within `radius` of p, trying `hint` first (then the face found
+    // goes there): true proves that p's distance is at most `radius`.
+    bool within(const vcg::Point3d& p, double radius, std::int64_t& hint) const
+    {
+        if (hint >= 0 && std::size_t(hint) < faces_.size() && tree_.distance(std::size_t(hint), p) <= radius)
+            return true;
+        const std::int64_t i = tree_.anyWithin(p, radius);
+        if (i < 0)
+            return false;
+        hint = i;
+        return true;
+    }
+
     // The closest of the faces `accept` takes.
     template <class Accept>
     FaceType* find(const vcg::Point3d& p, double& distance, Accept accept) const
@@ -141,6 +154,8 @@ struct DistanceSums {
         sumSquares += d * d;
         ++count;
     }
+    // A distance that counts toward the maximum only (see measurePoints).
+    void raiseMax(double d) { max = std::max(max, d); }
     void add(const DistanceSums& o)
     {
         max = std::max(max, o.max);
@@ -229,16 +244,31 @@ void splitInHalves(std::size_t begin, std::size_t end, const RunTogether& togeth
     together([&] { splitInHalves(begin, middle, together, task); }, [&] { splitInHalves(middle, end, together, task); });
 }
 
-// Distances of points[begin, end) to `closest`, into `distance` (same indexing).
+// Distances of points[begin, end) to `closest`, into `distance` (same indexing). With
+// `meanEvery` > 1 only every meanEvery-th point counts toward the mean and is stored; the
+// others count toward the maximum alone, and one of them is looked up in full only when no
+// face lies within the largest distance found so far (ClosestFace::within). Consecutive
+// points lie near the same face, so most take one triangle test, and the maximum is still
+// exact.
 template <class MeshTo>
 DistanceSums measurePoints(const std::vector<vcg::Point3d>& points, std::size_t begin, std::size_t end,
-                           const ClosestFace<MeshTo>& closest, std::vector<double>& distance)
+                           const ClosestFace<MeshTo>& closest, std::vector<double>& distance,
+                           std::size_t meanEvery = 1)
 {
     DistanceSums sums;
     std::int64_t hint = -1;
     for (std::size_t i = begin; i < end; ++i) {
-        closest.find(points[i], distance[i], hint);
-        sums.add(distance[i]);
+        const bool forMean = (i - begin) % meanEvery == 0;
+        if (!forMean && closest.within(points[i], sums.max, hint))
+            continue;
+        double d = 0.0;
+        closest.find(points[i], d, hint);
+        if (forMean) {
+            distance[i] = d;
+            sums.add(d);
+        } else {
+            sums.raiseMax(d);
+        }
     }
     return sums;
 }
@@ -252,11 +282,15 @@ DistanceSums measurePoints(const std::vector<vcg::Point3d>& points, std::size_t 
 // points are measured in kHausdorffChunks fixed chunks, split in halves for it to run at
 // once (points far from the other surface take longer to look up, so a few chunks per
 // core keep the cores busy); the sums are added in chunk order, so the figures do not
-// depend on how they ran.
+// depend on how they ran. `meanEvery` > 1 (detail::measurePoints): the maximum from every
+// point, the mean and RMS from every meanEvery-th (`samples` counts those); then
+// vertexDistances holds only theirs.
 template <class MeshTo>
 HausdorffStats distancesToSurface(const HausdorffSamples& samples, const detail::ClosestFace<MeshTo>& closest,
-                                  std::vector<double>* vertexDistances = nullptr, const RunTogether& together = {})
+                                  std::vector<double>* vertexDistances = nullptr, const RunTogether& together = {},
+                                  std::size_t meanEvery = 1)
 {
+    meanEvery = std::max<std::size_t>(meanEvery, 1);
     HausdorffStats s;
     if (vertexDistances)
         vertexDistances->assign(samples.vertexCount, 0.0);
@@ -270,12 +304,13 @@ HausdorffStats distancesToSurface(const HausdorffSamples& samples, const detail:
         std::array<detail::DistanceSums, kHausdorffChunks> chunk;
         detail::splitInHalves(0, kHausdorffChunks, together, [&](std::size_t c) {
             chunk[c] = detail::measurePoints(points, points.size() * c / kHausdorffChunks,
-                                             points.size() * (c + 1) / kHausdorffChunks, closest, distance);
+                                             points.size() * (c + 1) / kHausdorffChunks, closest, distance,
+                                             meanEvery);
         });
         for (const auto& c : chunk)
             sums.add(c);
     } else {
-        sums = detail::measurePoints(points, 0, points.size(), closest, distance);
+        sums = detail::measurePoints(points, 0, points.size(), closest, distance, meanEvery);
     }
     if (vertexDistances)
         for (std::size_t i = 0; i < samples.vertexIndex.size(); ++i)
@@ -293,9 +328,10 @@ HausdorffStats distancesToSurface(const HausdorffSamples& samples, const detail:
 template <class MeshFrom, class MeshTo>
 HausdorffStats oneSidedHausdorff(MeshFrom& from, detail::ClosestFace<MeshTo>& closest, std::size_t faceSamples,
                                  unsigned seed = 1, std::vector<double>* vertexDistances = nullptr,
-                                 const RunTogether& together = {})
+                                 const RunTogether& together = {}, std::size_t meanEvery = 1)
 {
-    return distancesToSurface(hausdorffSamples(from, faceSamples, seed), closest, vertexDistances, together);
+    return distancesToSurface(hausdorffSamples(from, faceSamples, seed), closest, vertexDistances, together,
+                              meanEvery);
 }
 
 template <class MeshFrom, class MeshTo>

@@ -54,6 +54,11 @@ template <class MeshType>
 class DistanceToLevelZero
 {
 public:
+    // A level switches by its maximum distance, measured from every point; the mean it
+    // reports comes from every kMeanEvery-th point (hausdorff.h: the others are looked up in
+    // full only when they could raise the maximum).
+    static constexpr std::size_t kMeanEvery = 32;
+
     DistanceToLevelZero(MeshType& original, std::size_t samples, double diagonal, RunTogether together)
         : original_(original), samples_(samples), diagonal_(diagonal), together_(std::move(together))
     {
@@ -71,8 +76,12 @@ public:
     {
         prepare();
         SymmetricHausdorff h;
-        together_([&] { h.forward = distancesToSurface(points_, detail::ClosestFace<MeshType>(level), nullptr, together_); },
-                  [&] { h.backward = oneSidedHausdorff(level, *index_, backwardSamples, 2, nullptr, together_); });
+        together_(
+            [&] {
+                h.forward = distancesToSurface(points_, detail::ClosestFace<MeshType>(level), nullptr, together_,
+                                               kMeanEvery);
+            },
+            [&] { h.backward = oneSidedHausdorff(level, *index_, backwardSamples, 2, nullptr, together_, kMeanEvery); });
         h.diagonal = diagonal_;
         return h;
     }

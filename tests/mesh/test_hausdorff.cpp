@@ -133,3 +133,51 @@ TEST(Hausdorff, MeasuredInChunksOnTwoThreadsItGivesTheSameFigures)
     EXPECT_EQ(wholeVertices, threadedVertices);
     EXPECT_GT(threaded.max, 0.005 * 7.3);
 }
+
+TEST(ClosestFace, WithinAgreesWithBruteForce)
+{
+    TestMesh m;
+    offsetSphere(m);
+    detail::ClosestFace<TestMesh> closest(m);
+    std::mt19937 rng(11);
+    const vcg::Point3d c = vcg::Point3d::Construct(m.bbox.Center());
+    std::uniform_real_distribution<double> spread(-m.bbox.Diag(), m.bbox.Diag());
+    int inside = 0, outside = 0;
+    for (int k = 0; k < 400; ++k) {
+        const vcg::Point3d p = c + vcg::Point3d(spread(rng), spread(rng), spread(rng));
+        const double d = bruteForce(m, p);
+        for (const double radius : {0.5 * d, 0.999 * d, 1.001 * d, 2.0 * d}) {
+            std::int64_t hint = -1;
+            const bool within = closest.within(p, radius, hint);
+            EXPECT_EQ(within, radius >= d) << "point " << k << " radius " << radius << " distance " << d;
+            (within ? inside : outside)++;
+        }
+    }
+    EXPECT_GT(inside, 0);
+    EXPECT_GT(outside, 0);
+}
+
+// The chain measures its levels looking up in full only the points that could raise the
+// largest distance (and every meanEvery-th, for the mean): the largest distance must be the
+// one every point looked up in full finds, on two threads too.
+TEST(Hausdorff, LookingUpOnlyWhatCouldRaiseTheMaximumKeepsItExact)
+{
+    TestMesh inner, outer;
+    sphereAndScaledCopy(inner, outer, [](const vcg::Point3f& fromCentre) {
+        return 1.0f + 0.02f * std::abs(fromCentre[1] * fromCentre[2]) / (7.3f * 7.3f);  // uneven offset
+    });
+    for (const auto& [from, to] : {std::pair<TestMesh*, TestMesh*>{&outer, &inner}, {&inner, &outer}}) {
+        detail::ClosestFace<TestMesh> closest(*to);
+        const HausdorffSamples samples = hausdorffSamples(*from, 30000, 3);
+        const HausdorffStats full = distancesToSurface(samples, closest);
+        for (const std::size_t every : {2, 8, 32}) {
+            const HausdorffStats fast = distancesToSurface(samples, closest, nullptr, {}, every);
+            const HausdorffStats threaded = distancesToSurface(samples, closest, nullptr, runOnTwoThreads, every);
+            EXPECT_EQ(fast.max, full.max) << every;
+            EXPECT_EQ(threaded.max, full.max) << every;
+            EXPECT_EQ(fast.samples, (samples.points.size() + every - 1) / every);
+            EXPECT_NEAR(fast.mean, full.mean, 0.1 * full.mean) << every;  // a subset's mean
+        }
+        EXPECT_GT(full.max, 0.003 * 7.3);
+    }
+}
