@@ -14,11 +14,12 @@
 // 0 (symmetric Hausdorff) while the sessions go on to the next level (the caller's
 // RunTogether may run both at once); the ratio between the measured and the requested
 // error steers the budgets from the level after next, so a collapse error that
-// underestimates the distance a viewer sees is corrected level by level. When the next
-// distance passes the point where the model is `proxyPixels` high, the chain ends with a
-// proxy: one axis-aligned box per remaining connected component (a box per part); where the
-// model is a couple of pixels high, the tetrahedron inscribed in each box, and last one
-// tetrahedron for the whole model.
+// underestimates the distance a viewer sees is corrected level by level. Where the model
+// is `proxyPixels` high, a proxy is made: one axis-aligned box per remaining connected
+// component (a box per part). Collapse levels go on beyond it only while the box's
+// measured error is still above the budget and they are heavier than the box (a jack's
+// deep socket keeps its box far off). Where the model is a couple of pixels high, the
+// tetrahedron inscribed in each box follows, and last one tetrahedron for the whole model.
 //
 // Every level's range comes from its measured error (lod_plan.h): it is drawn from where
 // that error projects to the pixel error, until the next level's does. The last level is
@@ -274,13 +275,47 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         pending = Pending();
     };
 
+    // The box per component is made where the model is proxyPixels high, from the
+    // components left there, and measured at once. A part whose box is far from it (a
+    // jack's deep socket, a switch's plunger) would otherwise draw its last collapse level
+    // until the box's own error is within the pixel error, which may be several times
+    // farther. So the collapse levels go on past that distance while the box does not yet
+    // serve there and they are still heavier than it, up to where the model is a couple of
+    // pixels high; the selection of useful levels keeps whichever of them serves.
+    const double dTetrahedron = detail::distanceForPixels(result.modelSize, kTetrahedronPixels, view);
+    struct BoxProxy {
+        MeshType* mesh = nullptr;
+        Measures measured;
+    } boxProxy;
+    auto takeBox = [&] {
+        boxProxy.mesh = &newScratch();
+        stats.errorBound = detail::errorBudgetAt(dProxy, view);
+        together(measurePending, [&] {
+            pieces.appendTo(*boxProxy.mesh);
+            detail::proxyPerComponent(*boxProxy.mesh, stats.errorBound, stats, appendBox<MeshType>);
+        });
+        settlePending();
+        if (progress)
+            progress(100 * plannedLevels / (plannedLevels + 1), "Measuring the box proxy");
+        boxProxy.measured = measure(*boxProxy.mesh);
+    };
+    auto boxServes = [&](double d) {
+        return boxProxy.mesh->fn == 0 || boxProxy.measured.distance.max() <= detail::errorBudgetAt(d, view) ||
+               pieces.faces() <= boxProxy.mesh->fn;
+    };
     int k = 0;
-    for (double d = dFill / kCloseUpFactor; d < dProxy; d *= options.distanceRatio, ++k) {
+    for (double d = dFill / kCloseUpFactor;; d *= options.distanceRatio, ++k) {
+        if (d >= dProxy) {
+            if (!boxProxy.mesh)
+                takeBox();
+            if (d >= dTetrahedron || boxServes(d))
+                break;
+        }
         const double budget = detail::errorBudgetAt(d, view);
         if (progress) {
             char text[96];
             std::snprintf(text, sizeof text, "Simplifying level %d, seen from %.3g model units", k + 1, d);
-            progress(100 * k / (plannedLevels + 1), text);
+            progress(100 * std::min(k, plannedLevels) / (plannedLevels + 1), text);
         }
         const double bound = budget / hausdorffPerCollapseError;
         stats.targetFaces = 0;
@@ -293,6 +328,8 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         const int faces = pieces.faces();
         if (faces >= before || faces > 0.9 * previous)
             continue;  // too little lighter than the last level to be worth one
+        if (boxProxy.mesh && faces <= boxProxy.mesh->fn)
+            break;  // no lighter than the box, which keeps every component's extent
         MeshType& mesh = newLevel(int(result.levels.size()));
         pieces.appendTo(mesh);
         stats.facesAfter = mesh.fn;
@@ -302,15 +339,15 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         pending.collapseError = stats.largestError;
         stats.relaxed.clear();
     }
+    together(measurePending, [] {});
+    settlePending();
     pieces.release();
 
-    // The proxies, each when it is lighter than the last level: a box per component where
-    // the model is proxyPixels high, then, where it is a couple of pixels high, the
-    // tetrahedron inscribed in each box (the fewest triangles that still enclose a volume),
-    // and then one for the whole model. Each is drawn from where its measured error is
-    // within the pixel error, like any level.
-    pieces.appendTo(working);
-    auto addProxy = [&](const std::string& what, int facesEach) {
+    // The proxies, each when it is lighter than the last level: the box per component, then,
+    // where the model is a couple of pixels high, the tetrahedron inscribed in each box (the
+    // fewest triangles that still enclose a volume), and then one for the whole model. Each
+    // is drawn from where its measured error is within the pixel error, like any level.
+    auto addProxy = [&](const std::string& what, int facesEach, const Measures* measured) {
         if (working.fn == 0 || working.fn >= result.levels.back().faces)
             return;
         if (progress)
@@ -320,24 +357,23 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         stats.facesAfter = proxy.fn;
         stats.relaxed.push_back(what + " proxy: one " + what + " per connected component (" +
                                 std::to_string(proxy.fn / facesEach) + ")");
-        addLevel(proxy, stats, measure(proxy));
+        addLevel(proxy, stats, measured ? *measured : measure(proxy));
     };
-    stats.errorBound = detail::errorBudgetAt(dProxy, view);
-    together(measurePending, [&] { detail::proxyPerComponent(working, stats.errorBound, stats, appendBox<MeshType>); });
-    settlePending();
-    addProxy("box", 12);
+    detail::copyWithParts(working, *boxProxy.mesh);
+    boxProxy.mesh->Clear();
+    addProxy("box", 12, &boxProxy.measured);
     if (options.proxyPixels > kTetrahedronPixels) {
         stats.relaxed.clear();
         stats.errorBound =
             detail::errorBudgetAt(detail::distanceForPixels(result.modelSize, kTetrahedronPixels, view), view);
         const detail::ProxyBox whole = detail::modelBox(working);
         detail::proxyPerComponent(working, stats.errorBound, stats, appendTetrahedron<MeshType>);
-        addProxy("tetrahedron", 4);
+        addProxy("tetrahedron", 4, nullptr);
         // Last, one tetrahedron for all of it (also when every part was below the budget).
         if (working.fn != 4 && !whole.box.IsNull()) {
             stats.relaxed.clear();
             detail::replaceByProxies(working, {whole}, appendTetrahedron<MeshType>);
-            addProxy("model tetrahedron", 4);
+            addProxy("model tetrahedron", 4, nullptr);
         }
     }
 
