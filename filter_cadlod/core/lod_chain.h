@@ -364,8 +364,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     addProxy("box", 12, &boxProxy.measured);
     if (options.proxyPixels > kTetrahedronPixels) {
         stats.relaxed.clear();
-        stats.errorBound =
-            detail::errorBudgetAt(detail::distanceForPixels(result.modelSize, kTetrahedronPixels, view), view);
+        stats.errorBound = detail::errorBudgetAt(dTetrahedron, view);
         const detail::ProxyBox whole = detail::modelBox(working);
         detail::proxyPerComponent(working, stats.errorBound, stats, appendTetrahedron<MeshType>);
         addProxy("tetrahedron", 4, nullptr);

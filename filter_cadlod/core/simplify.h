@@ -274,25 +274,6 @@ bool relaxShapeGuards(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
     return false;
 }
 
-}  // namespace detail
-
-// The collapses themselves, on a prepared context, until stats.targetFaces or until no
-// collapse is left. When the face target is not met with the limits of the first pass,
-// they give way in this order (relaxToReachTarget), each step logged in stats.relaxed:
-//   1. features are never locks in the first place: collapses that break one are ranked
-//      at featurePenalty times their error (cad_edge_collapse.h), and so is removing a
-//      small component whole (component_removal.h): they run when they are cheaper;
-//      so is a collapse that turns a face away from the input surface near it
-//      (input_surface.h), which a viewer sees lit as the wrong side; in the far field (the
-//      mesh down to kFacingFarField of its faces) that check gives way, logged; and so is
-//      cutting a tunnel whose rim has shrunk to three edges, where the link condition
-//      refuses every collapse (tunnel_cut.h), logged;
-//   2. the shape guards (minCompactness, no free slivers).
-// Flips of a face against itself (cad_edge_collapse.h's normal checks), the link condition
-// on collapses (no collapse changes the topology: only a priced cut does) and locked
-// (non-manifold) vertices never give way.
-namespace detail {
-
 // One run of the heap until the session's goal, as vcglib's DoOptimization does it (the
 // same pops, the same dropping of stale entries once the heap outgrows the mesh), but
 // ending where that dropping leaves the heap empty: vcglib then pops from the empty heap
@@ -325,6 +306,21 @@ bool runHeap(vcg::LocalOptimization<MeshType>& session)
 
 }  // namespace detail
 
+// The collapses themselves, on a prepared context, until stats.targetFaces or until no
+// collapse is left. When the face target is not met with the limits of the first pass,
+// they give way in this order (relaxToReachTarget), each step logged in stats.relaxed:
+//   1. features are never locks in the first place: collapses that break one are ranked
+//      at featurePenalty times their error (cad_edge_collapse.h), and so is removing a
+//      small component whole (component_removal.h): they run when they are cheaper;
+//      so is a collapse that turns a face away from the input surface near it
+//      (input_surface.h), which a viewer sees lit as the wrong side; in the far field (the
+//      mesh down to kFacingFarField of its faces) that check gives way, logged; and so is
+//      cutting a tunnel whose rim has shrunk to three edges, where the link condition
+//      refuses every collapse (tunnel_cut.h), logged;
+//   2. the shape guards (minCompactness, no free slivers).
+// Flips of a face against itself (cad_edge_collapse.h's normal checks), the link condition
+// on collapses (no collapse changes the topology: only a priced cut does) and locked
+// (non-manifold) vertices never give way.
 template <class MeshType>
 void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats, vcg::CallBackPos* progress)
 {
