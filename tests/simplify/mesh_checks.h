@@ -67,14 +67,16 @@ vcg::Point3d unitNormal(const FaceType& f)
 // closest to their centroid (degenerate faces count as folded). Where input surfaces touch
 // (a chip standing on a board: two faces at the same distance, facing opposite ways), the
 // nearest face is the best-aligned of those within a 1e-5 diagonal tie: a face lying on
-// both is not turned away from the surface it follows.
+// both is not turned away from the surface it follows. A face turned exactly `limitDeg`
+// (a chip lead's top beside its side wall, both axis-aligned: a dot product of exactly 0)
+// is not turned more: the cosine gets a rounding margin, as cos(pi/2) is 6e-17, not 0.
 template <class MeshResult, class MeshOriginal>
 int foldedFaces(MeshResult& result, MeshOriginal& original, double limitDeg = 90.0)
 {
     cadlod::detail::ClosestFace<MeshOriginal> closest(original);
     if (closest.empty())
         return 0;
-    const double cosLimit = std::cos(limitDeg * M_PI / 180.0);
+    const double cosLimit = std::cos(limitDeg * M_PI / 180.0) - 1e-12;
     const double tie = 1e-5 * cadlod::liveDiagonal(original);
     int folded = 0;
     for (auto& f : result.face) {

@@ -103,6 +103,27 @@ TEST(InputSurface, OnlyTheFacesOwnPartCounts)
     EXPECT_FALSE(byPart.facesAlong(chipFace, nearBoard, vcg::Point3d(0, 0, 1)));  // its own bottom faces down
 }
 
+// The benchmarks' flip count (mesh_checks.h): a face standing at exactly 90° to the input
+// face nearest to it, as a lead's top does beside its axis-aligned side wall (a dot product
+// of exactly 0), is turned 90°, not more; one turned 90.1° is turned more.
+TEST(FoldedFaces, AFaceAtExactlyTheLimitIsNotTurnedMore)
+{
+    TestMesh input, atRightAngles, beyond;
+    CadBuilder floor;
+    floor.addTriangle(floor.addPoint(0, 0, 0), floor.addPoint(4, 0, 0), floor.addPoint(0, 4, 0));  // faces +z
+    floor.build(input);
+    CadBuilder wall;  // in the plane x = 1, facing +x, its centroid 0.5 above the floor
+    wall.addTriangle(wall.addPoint(1, 0, 0), wall.addPoint(1, 1.5, 0), wall.addPoint(1, 0, 1.5));
+    wall.build(atRightAngles);
+    EXPECT_EQ(foldedFaces(atRightAngles, input, 90.0), 0);
+    EXPECT_EQ(foldedFaces(atRightAngles, input, 89.9), 1);
+    CadBuilder tilted;  // the wall leaning 0.1° toward -z
+    const double s = std::sin(0.1 * M_PI / 180), c = std::cos(0.1 * M_PI / 180);
+    tilted.addTriangle(tilted.addPoint(1, 0, 0), tilted.addPoint(1, 1.5, 0), tilted.addPoint(1 + 1.5 * s, 0, 1.5 * c));
+    tilted.build(beyond);
+    EXPECT_EQ(foldedFaces(beyond, input, 90.0), 1);
+}
+
 // The chip with eight bent leads (2 050 faces) at 93 and 95 %: the face target is reached, and
 // the collapses that turn a face over 90° from the input face nearest to it, priced like
 // feature breaks, run only where everything else costs 16 times more: none at 93 %, at most
