@@ -226,14 +226,7 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     ctx.quadrics.init(m, weights, [&](FaceType& f, int j) { return f.IsUserBit(ctx.bits.edge[j]); });
     ctx.storeInputNormals(m);
     if (params.normalCheck && params.facingCheck) {
-        std::vector<std::int32_t> partOfFace;
-        if (vcg::tri::HasPerFaceAttribute(m, kPartAttribute)) {
-            auto handle = facePartHandle(m);
-            partOfFace.resize(m.face.size());
-            for (std::size_t i = 0; i < m.face.size(); ++i)
-                partOfFace[i] = handle[i];
-        }
-        ctx.surface = std::make_shared<InputSurface>(m, ctx.diagonal, std::move(partOfFace));
+        ctx.surface = std::make_shared<InputSurface>(m, ctx.diagonal);
         ctx.facingPenalty = params.featurePenalty;
         ctx.facingFloor = int(kFacingFarField * m.fn);
         ctx.faceCount = &m.fn;
