@@ -23,7 +23,8 @@ void addPlacementParameters(RichParameterList& par)
     par.addParam(RichFloat("tieTolerance", d.tieTolerance, "Tie tolerance (relative)",
                            "Placements within this fraction of the cheapest cost are tied; compactness decides."));
     par.addParam(RichFloat("flatTolerance", d.flatTolerance, "Flat tolerance (fraction of diagonal)",
-                           "Tie floor for flat regions: an RMS distance as a fraction of the diagonal."));
+                           "Collapses within this RMS distance (a fraction of the diagonal) are free: they may slide a "
+                           "feature vertex along its feature, but must not make a sliver."));
     par.addParam(RichInt("candidatesPerEdge", d.candidatesPerEdge, "Candidates per edge",
                          "Points tried along each edge, besides its ends and the quadric optimum."));
     par.addParam(RichBool("optimalPlacement", d.optimalPlacement, "Optimal placement",

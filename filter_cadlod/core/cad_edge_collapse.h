@@ -4,15 +4,18 @@
 //
 // For an edge (v0, v1) the candidates are v0, v1, evenly spaced points between them and
 // the quadric optimum (when well conditioned and near the edge). Candidates within a
-// relative tolerance of the cheapest cost, or within an absolute floor (flat regions),
-// are tied; the tied candidate whose surrounding triangles have the highest mean
-// compactness wins. Priority = quadric cost of the chosen position (normalised by the
-// bbox diagonal; the sum over the merged planes, as in Garland–Heckbert), plus a small floor that orders the (nearly) free collapses of flat
-// regions and straight lines: smallest merged area and best shape first (the floor is
-// divided by the mean compactness of the new triangles over qualityThreshold, capped at
-// 1). Dividing the whole priority by the shape, as vcglib's QualityThr does, delays real
-// error reductions for shape: on the bench shaft at 90 % that cost Hausdorff (0.027 %
-// vs 0.019 % of the diagonal) and gained no compactness.
+// relative tolerance of the cheapest cost, or within the rounding of float coordinates
+// (flat regions, where every candidate costs nothing but rounding), are tied; the tied
+// candidate whose surrounding triangles have the highest mean compactness wins.
+// Priority = quadric cost of the chosen position (normalised by the bbox diagonal; the
+// sum over the merged planes, as in Garland–Heckbert), plus a floor of the same rounding
+// size that orders the free collapses of flat regions and straight lines: smallest merged
+// area and best shape first (the floor is divided by the mean compactness of the new
+// triangles over qualityThreshold, capped at 1). Dividing the whole priority by the
+// shape, as vcglib's QualityThr does, delays real error reductions for shape: on the
+// bench shaft at 90 % that cost Hausdorff and gained no compactness. So does a floor far
+// above the rounding: it ties and orders real, small errors by shape instead of by error,
+// and the largest of them grows (docs/benchmarks.md).
 //
 // Evaluation is lazy: an edge enters the heap with a cheap lower bound of its priority
 // (the quadric cost of its cheapest candidate, no look at the faces around it) and is
@@ -71,6 +74,10 @@ struct PlacementScore {
     double meanCompactness = 0.0;
 };
 
+// What float coordinates resolve, as a share of their magnitude (a few units in the last
+// place): quadric costs below this distance are rounding, not error.
+inline constexpr double kRoundingOfFloat = 2.5 * std::numeric_limits<float>::epsilon();
+
 template <class MeshType>
 struct CollapseContext : public vcg::BaseParameterClass {
     using VertexType = typename MeshType::VertexType;
@@ -81,7 +88,8 @@ struct CollapseContext : public vcg::BaseParameterClass {
     VertexQuadrics<VertexType> quadrics;
     SimplifyStats* stats = nullptr;
     double diagonal = 1.0;
-    double flatError2 = 0.0;      // (flatTolerance * diagonal)²
+    double flatError2 = 0.0;      // (flatTolerance * diagonal)²: collapses within it are free
+    double roundingError2 = 0.0;  // (kRoundingOfFloat * the coordinates' magnitude)²
     double maxErrorAbs = 0.0;     // 0: unbounded
     double cosNormalLimit = -1.0;
     double largestError = 0.0;    // over executed collapses
@@ -129,13 +137,13 @@ struct CollapseContext : public vcg::BaseParameterClass {
 
     // Priority of an operation: its quadric cost (the weighted sum of squared distances to
     // the merged planes, not their mean: a vertex that stands for many planes weighs more),
-    // plus the flat floor that keeps free collapses ordered (smallest merged weight, best
-    // shape first) instead of tied at ~0. `shape` in (0, 1]: 1 for well-shaped results.
-    // Both terms are normalised by the bbox diagonal, so the order is scale-free.
+    // plus a rounding floor that keeps collapses costing nothing ordered (smallest merged
+    // weight, best shape first) instead of tied at ~0. `shape` in (0, 1]: 1 for well-shaped
+    // results. Both terms are normalised by the bbox diagonal, so the order is scale-free.
     double priority(double cost, double area, double shape) const
     {
         const double diag2 = diagonal * diagonal;
-        return (cost / diag2 + flatError2 * area / (diag2 * shape)) / diag2;
+        return (cost / diag2 + roundingError2 * area / (diag2 * shape)) / diag2;
     }
 
     // No face has changed yet.
@@ -642,7 +650,7 @@ private:
         double minRanked = std::numeric_limits<double>::max();
         for (int i = 0; i < count; ++i)
             minRanked = std::min(minRanked, cand[i].ranked);
-        const double tieLimit = minRanked * (1.0 + ctx.params.tieTolerance) + flatFloor;
+        const double tieLimit = minRanked * (1.0 + ctx.params.tieTolerance) + area * ctx.roundingError2;
 
         // No new face below minCompactness, unless it is still better than the worst now.
         // A collapse that costs nothing must not make a sliver either: any later collapse

@@ -65,6 +65,21 @@ double usedDiagonal(MeshType& m, int lockedBit)
     return box.IsNull() ? 0.0 : box.Diag();
 }
 
+// The distance from the origin to the farthest finite vertex of a face: float coordinates
+// resolve about FLT_EPSILON of it, whatever the size of the part.
+template <class MeshType>
+double coordinateReach(const MeshType& m)
+{
+    double reach2 = 0.0;
+    for (const auto& f : m.face)
+        for (int j = 0; j < 3 && !f.IsD(); ++j) {
+            const vcg::Point3d p = vcg::Point3d::Construct(f.cP(j));
+            if (std::isfinite(p.SquaredNorm()))
+                reach2 = std::max(reach2, p.SquaredNorm());
+        }
+    return std::sqrt(reach2);
+}
+
 // The same diagonal, leaving the mesh as it is.
 template <class MeshType>
 double finiteFaceDiagonal(const MeshType& m)
@@ -191,6 +206,7 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
         return false;
     ctx.diagonal = stats.diagonal;
     ctx.flatError2 = std::pow(params.flatTolerance * ctx.diagonal, 2);
+    ctx.roundingError2 = std::pow(kRoundingOfFloat * std::max(ctx.diagonal, detail::coordinateReach(m)), 2);
     ctx.maxErrorAbs = params.maxError * ctx.diagonal;
     ctx.cosNormalLimit = std::cos(params.normalThreshold * M_PI / 180.0);
 

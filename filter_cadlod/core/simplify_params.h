@@ -20,10 +20,13 @@ struct SimplifyParams {
 
     // Placement: candidates are both endpoints, `candidatesPerEdge` evenly spaced interior
     // points and (optimalPlacement) the quadric optimum when well conditioned. Those whose
-    // cost is within tieTolerance (relative) of the cheapest, or within flatTolerance
-    // (RMS distance as a fraction of the bbox diagonal), are tied; the tied candidate
-    // with the best mean compactness of the surrounding triangles wins.
+    // cost is within tieTolerance (relative) of the cheapest, or within the rounding of
+    // float coordinates, are tied; the tied candidate with the best mean compactness of the
+    // surrounding triangles wins.
     double tieTolerance = 0.1;
+    // A collapse whose RMS error is within flatTolerance (a fraction of the bbox diagonal)
+    // is free: it moves no plane a viewer could see. It may slide a feature vertex along its
+    // feature, is not checked against the input surface, and must not make a sliver.
     double flatTolerance = 1e-5;
     int candidatesPerEdge = 3;
     bool optimalPlacement = true;
