@@ -2,8 +2,9 @@
 // TriEdgeCollapse framework, like vcglib's TriEdgeCollapseQuadric) whose vertex placement
 // breaks quadric-cost ties by triangle compactness.
 //
-// For an edge (v0, v1) the candidates are v0, v1, evenly spaced points between them and
-// the quadric optimum (when well conditioned and near the edge). Candidates within a
+// For an edge (v0, v1) the candidates are v0, v1, evenly spaced points between them, the
+// quadric optimum (when well conditioned) and the quadric's minimum nearest the edge's
+// middle (where the planes meet in a line), both only near the edge. Candidates within a
 // relative tolerance of the cheapest cost, or within the rounding of float coordinates
 // (flat regions, where every candidate costs nothing but rounding), are tied; the tied
 // candidate whose surrounding triangles have the highest mean compactness wins.
@@ -170,6 +171,41 @@ inline bool quadricMinimum(const Quadric& q, vcg::Point3d& x)
     return std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]);
 }
 
+// The minimum of q(x) + eps |x - m|^2, eps a small share of q's trace: the quadric's
+// optimum where it is well determined, and the point nearest m along the directions where
+// it is flat. On a cylinder's strips or along a crease the planes meet in a line, so the
+// plain optimum does not exist (quadricMinimum refuses it), but the best placement near
+// the edge still lies off the edge, on that line.
+inline bool nearestMinimum(const Quadric& q, const vcg::Point3d& m, vcg::Point3d& x)
+{
+    constexpr double kPullToM = 1e-3;
+    const double eps = kPullToM * (q.a[0] + q.a[3] + q.a[5]);
+    if (!(eps > 0))
+        return false;
+    Quadric pulled = q;
+    pulled.a[0] += eps;
+    pulled.a[3] += eps;
+    pulled.a[5] += eps;
+    for (int i = 0; i < 3; ++i)
+        pulled.b[i] -= 2.0 * eps * m[i];
+    return quadricMinimum(pulled, x);
+}
+
+// Whether x lies beside the segment p0 -> p1: between its ends, off it by at most a
+// quarter of its length. A minimum along a line could otherwise slide far along a crease
+// or an axis, where the quadric sees no cost but the faces around stretch past the end of
+// the crease.
+inline bool besideTheEdge(const vcg::Point3d& x, const vcg::Point3d& p0, const vcg::Point3d& p1)
+{
+    const vcg::Point3d e = p1 - p0;
+    const double length2 = e.SquaredNorm();
+    if (!(length2 > 0))
+        return false;
+    const double t = ((x - p0) * e) / length2;
+    const double off2 = (x - (p0 + e * t)).SquaredNorm();
+    return t >= 0.0 && t <= 1.0 && off2 <= length2 / 100.0;
+}
+
 inline double applyQuadric(const Quadric& q, const vcg::Point3d& p)
 {
     return std::max(0.0, q.Apply(p));
@@ -234,7 +270,7 @@ public:
             if (*ctx.faceCount <= ctx.facingFloor)
                 ctx.facingGaveWay = true;
             else if (!newFacesFaceTheInput(ctx))
-                return priceTurningAway(ctx);
+                return offEdge_ ? retryOnTheEdge(ctx) : priceTurningAway(ctx);
         }
         return true;
     }
@@ -367,6 +403,21 @@ private:
     {
         heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(a, b), static_cast<Context*>(pp)->mark, pp)));
         std::push_heap(heap.begin(), heap.end());
+    }
+
+    // A quadric minimum off the edge would turn a face away from the input surface: on a
+    // convex surface the minimum lies outside the chords, and where another part fits
+    // closely (a pin in its bore) that is across its surface. The points of the segment
+    // lie within the chords: the collapse is evaluated again with those alone.
+    bool retryOnTheEdge(Context& ctx)
+    {
+        onTheEdgeOnly_ = true;
+        evaluate(ctx);
+        if (feasible_ && ctx.heap && !ctx.heap->empty() && this->_priority > ctx.heap->front().pri) {
+            requeue(*ctx.heap);
+            return false;
+        }
+        return IsFeasible(&ctx);
     }
 
     // The collapse would turn a face away from the input surface: refused, or ranked at
@@ -530,29 +581,34 @@ private:
         double cost;      // quadric cost: the geometric error the placement makes
         bool breaks;      // moves a feature point off its feature (see evaluate)
         double ranked;    // the cost it is ordered by: cost, times the feature penalty if it breaks
+        bool offEdge;     // a quadric minimum, not a point of the segment
     };
     static constexpr int kMaxCandidates = 32;
     static constexpr double kSliver = 0.1;  // compactness below which a face counts as a sliver
 
-    // Both endpoints, evenly spaced interior points and the quadric optimum (if well
-    // conditioned and near the edge), with their costs. A placement breaks a feature when it
+    // Both endpoints, evenly spaced interior points, the quadric optimum (if well
+    // conditioned) and its minimum nearest the middle (both if near the edge), with their
+    // costs. A placement breaks a feature when it
     // moves a pinned endpoint, or puts a vertex that must stay on a boundary polyline (it
     // may take the other endpoint's place) between the two; evaluate() lets it off when it
     // costs no more than the flat floor (it lies on the feature already).
     static int candidates(const Context& ctx, const Quadric& q, const vcg::Point3d& p0, const vcg::Point3d& p1,
-                          bool v0Pinned, bool v1Pinned, bool onBoundaryLine, Candidate* cand)
+                          bool v0Pinned, bool v1Pinned, bool onBoundaryLine, bool offEdge, Candidate* cand)
     {
         int count = 0;
         const int interior = std::clamp(ctx.params.candidatesPerEdge, 0, kMaxCandidates - 4);
         const bool between = v0Pinned || v1Pinned || onBoundaryLine;
-        cand[count++] = {p0, 0.0, v1Pinned, 0.0};
-        cand[count++] = {p1, 0.0, v0Pinned, 0.0};
+        cand[count++] = {p0, 0.0, v1Pinned, 0.0, false};
+        cand[count++] = {p1, 0.0, v0Pinned, 0.0, false};
         for (int i = 1; i <= interior; ++i)
-            cand[count++] = {p0 + (p1 - p0) * (double(i) / (interior + 1)), 0.0, between, 0.0};
+            cand[count++] = {p0 + (p1 - p0) * (double(i) / (interior + 1)), 0.0, between, 0.0, false};
+        const vcg::Point3d middle = (p0 + p1) * 0.5;
+        const double reach = vcg::Distance(p0, p1);
         vcg::Point3d optimum(0, 0, 0);
-        if (ctx.params.optimalPlacement && quadricMinimum(q, optimum) &&
-            vcg::Distance(optimum, (p0 + p1) * 0.5) <= vcg::Distance(p0, p1))
-            cand[count++] = {optimum, 0.0, between, 0.0};
+        if (offEdge && ctx.params.optimalPlacement && quadricMinimum(q, optimum) && vcg::Distance(optimum, middle) <= reach)
+            cand[count++] = {optimum, 0.0, between, 0.0, true};
+        if (offEdge && ctx.params.optimalPlacement && nearestMinimum(q, middle, optimum) && besideTheEdge(optimum, p0, p1))
+            cand[count++] = {optimum, 0.0, between, 0.0, true};
         for (int i = 0; i < count; ++i)
             cand[i].cost = applyQuadric(q, cand[i].p);
         return count;
@@ -581,7 +637,7 @@ private:
         const Quadric q = mergedQuadric(ctx);
         Candidate cand[kMaxCandidates];
         const int count = candidates(ctx, q, vcg::Point3d::Construct(v0->cP()), vcg::Point3d::Construct(v1->cP()),
-                                     false, false, false, cand);
+                                     false, false, false, true, cand);
         double minCost = std::numeric_limits<double>::max();
         for (int i = 0; i < count; ++i)
             minCost = std::min(minCost, cand[i].cost);
@@ -599,7 +655,7 @@ private:
                          Candidate* cand) const
     {
         const double penalty = ctx.params.featurePenalty;
-        int count = candidates(ctx, q, p0, p1, v0Pinned, v1Pinned, onBoundaryLine, cand);
+        int count = candidates(ctx, q, p0, p1, v0Pinned, v1Pinned, onBoundaryLine, !onTheEdgeOnly_, cand);
         int kept = 0;
         for (int i = 0; i < count; ++i) {
             Candidate c = cand[i];
@@ -694,6 +750,7 @@ private:
         target_ = vcg::Point3<ScalarType>::Construct(cand[best].p);
         error_ = float(area > 0 ? std::sqrt(cost / area) : std::sqrt(cost));
         breaksFeature_ = cand[best].breaks;
+        offEdge_ = cand[best].offEdge;
         free_ = cost <= flatFloor;
         if (ctx.maxErrorAbs > 0 && error_ > ctx.maxErrorAbs)
             return reject(stats.rejectedError);
@@ -710,6 +767,8 @@ private:
     bool evaluated_ = false;
     bool turnsAway_ = false;  // a new face would turn away from the input surface: ranked at facingPenalty
     bool free_ = false;       // costs no more than the flat floor
+    bool offEdge_ = false;    // target_ is a quadric minimum off the segment
+    bool onTheEdgeOnly_ = false;  // a minimum off the segment turned a face away: the segment's points only
     int evaluatedAt_ = 0;  // ctx.mark when evaluated
 };
 
