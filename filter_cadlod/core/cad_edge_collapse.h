@@ -192,7 +192,7 @@ inline bool nearestMinimum(const Quadric& q, const vcg::Point3d& m, vcg::Point3d
 }
 
 // Whether x lies beside the segment p0 -> p1: between its ends, off it by at most a
-// quarter of its length. A minimum along a line could otherwise slide far along a crease
+// tenth of its length (a chord's sag is a few hundredths of it). A minimum along a line could otherwise slide far along a crease
 // or an axis, where the quadric sees no cost but the faces around stretch past the end of
 // the crease.
 inline bool besideTheEdge(const vcg::Point3d& x, const vcg::Point3d& p0, const vcg::Point3d& p1)
@@ -586,14 +586,14 @@ private:
     static constexpr int kMaxCandidates = 32;
     static constexpr double kSliver = 0.1;  // compactness below which a face counts as a sliver
 
-    // Both endpoints, evenly spaced interior points, the quadric optimum (if well
-    // conditioned) and its minimum nearest the middle (both if near the edge), with their
-    // costs. A placement breaks a feature when it
-    // moves a pinned endpoint, or puts a vertex that must stay on a boundary polyline (it
-    // may take the other endpoint's place) between the two; evaluate() lets it off when it
-    // costs no more than the flat floor (it lies on the feature already).
+    // Both endpoints, evenly spaced interior points and, with `offEdgeMinima`, the quadric
+    // optimum (if well conditioned) and its minimum nearest the middle (both if near the
+    // edge), with their costs. A placement breaks a feature when it moves a pinned endpoint,
+    // or puts a vertex that must stay on a boundary polyline (it may take the other
+    // endpoint's place) between the two; evaluate() lets it off when it costs no more than
+    // the flat floor (it lies on the feature already).
     static int candidates(const Context& ctx, const Quadric& q, const vcg::Point3d& p0, const vcg::Point3d& p1,
-                          bool v0Pinned, bool v1Pinned, bool onBoundaryLine, bool offEdge, Candidate* cand)
+                          bool v0Pinned, bool v1Pinned, bool onBoundaryLine, bool offEdgeMinima, Candidate* cand)
     {
         int count = 0;
         const int interior = std::clamp(ctx.params.candidatesPerEdge, 0, kMaxCandidates - 4);
@@ -605,9 +605,9 @@ private:
         const vcg::Point3d middle = (p0 + p1) * 0.5;
         const double reach = vcg::Distance(p0, p1);
         vcg::Point3d optimum(0, 0, 0);
-        if (offEdge && ctx.params.optimalPlacement && quadricMinimum(q, optimum) && vcg::Distance(optimum, middle) <= reach)
+        if (offEdgeMinima && ctx.params.optimalPlacement && quadricMinimum(q, optimum) && vcg::Distance(optimum, middle) <= reach)
             cand[count++] = {optimum, 0.0, between, 0.0, true};
-        if (offEdge && ctx.params.optimalPlacement && nearestMinimum(q, middle, optimum) && besideTheEdge(optimum, p0, p1))
+        if (offEdgeMinima && ctx.params.optimalPlacement && nearestMinimum(q, middle, optimum) && besideTheEdge(optimum, p0, p1))
             cand[count++] = {optimum, 0.0, between, 0.0, true};
         for (int i = 0; i < count; ++i)
             cand[i].cost = applyQuadric(q, cand[i].p);
