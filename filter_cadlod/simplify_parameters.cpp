@@ -28,8 +28,8 @@ void addPlacementParameters(RichParameterList& par)
     par.addParam(RichInt("candidatesPerEdge", d.candidatesPerEdge, "Candidates per edge",
                          "Points tried along each edge, besides its ends and the quadric optimum."));
     par.addParam(RichBool("optimalPlacement", d.optimalPlacement, "Optimal placement",
-                          "Also try the quadric optimum and, where its planes meet in a line, the point of that line "
-                          "nearest the edge's middle (both when near the edge)."));
+                          "Also try the quadric optimum or, where its planes meet in a line, the point of that line "
+                          "nearest the edge's middle (when near the edge)."));
     par.addParam(RichFloat("boundaryWeight", d.boundaryWeight, "Boundary/crease weight",
                            "Weight of the constraint quadrics of boundaries, creases and borders."));
     par.addParam(RichBool("preserveTopology", d.preserveTopology, "Preserve topology",

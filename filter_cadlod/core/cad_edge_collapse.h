@@ -2,9 +2,9 @@
 // TriEdgeCollapse framework, like vcglib's TriEdgeCollapseQuadric) whose vertex placement
 // breaks quadric-cost ties by triangle compactness.
 //
-// For an edge (v0, v1) the candidates are v0, v1, evenly spaced points between them, the
-// quadric optimum (when well conditioned) and the quadric's minimum nearest the edge's
-// middle (where the planes meet in a line), both only near the edge. Candidates within a
+// For an edge (v0, v1) the candidates are v0, v1, evenly spaced points between them and the
+// quadric's optimum near the edge (where the planes meet in a line and there is none, the
+// point of that line nearest the edge's middle: quadricPlacement). Candidates within a
 // relative tolerance of the cheapest cost, or within the rounding of float coordinates
 // (flat regions, where every candidate costs nothing but rounding), are tied; the tied
 // candidate whose surrounding triangles have the highest mean compactness wins.
@@ -204,6 +204,17 @@ inline bool besideTheEdge(const vcg::Point3d& x, const vcg::Point3d& p0, const v
     const double t = ((x - p0) * e) / length2;
     const double off2 = (x - (p0 + e * t)).SquaredNorm();
     return t >= 0.0 && t <= 1.0 && off2 <= length2 / 100.0;
+}
+
+// The quadric's own placement for the edge p0 -> p1: its optimum where the planes meet in a
+// point, near the edge; where they meet in a line (a cylinder's strips, a crease), the
+// point of that line nearest the edge's middle, beside the edge.
+inline bool quadricPlacement(const Quadric& q, const vcg::Point3d& p0, const vcg::Point3d& p1, vcg::Point3d& x)
+{
+    const vcg::Point3d middle = (p0 + p1) * 0.5;
+    if (quadricMinimum(q, x))
+        return vcg::Distance(x, middle) <= vcg::Distance(p0, p1);
+    return nearestMinimum(q, middle, x) && besideTheEdge(x, p0, p1);
 }
 
 inline double applyQuadric(const Quadric& q, const vcg::Point3d& p)
@@ -586,9 +597,8 @@ private:
     static constexpr int kMaxCandidates = 32;
     static constexpr double kSliver = 0.1;  // compactness below which a face counts as a sliver
 
-    // Both endpoints, evenly spaced interior points and, with `offEdgeMinima`, the quadric
-    // optimum (if well conditioned) and its minimum nearest the middle (both if near the
-    // edge), with their costs. A placement breaks a feature when it moves a pinned endpoint,
+    // Both endpoints, evenly spaced interior points and, with `offEdgeMinima`, the quadric's
+    // own placement (quadricPlacement), with their costs. A placement breaks a feature when it moves a pinned endpoint,
     // or puts a vertex that must stay on a boundary polyline (it may take the other
     // endpoint's place) between the two; evaluate() lets it off when it costs no more than
     // the flat floor (it lies on the feature already).
@@ -602,12 +612,8 @@ private:
         cand[count++] = {p1, 0.0, v0Pinned, 0.0, false};
         for (int i = 1; i <= interior; ++i)
             cand[count++] = {p0 + (p1 - p0) * (double(i) / (interior + 1)), 0.0, between, 0.0, false};
-        const vcg::Point3d middle = (p0 + p1) * 0.5;
-        const double reach = vcg::Distance(p0, p1);
         vcg::Point3d optimum(0, 0, 0);
-        if (offEdgeMinima && ctx.params.optimalPlacement && quadricMinimum(q, optimum) && vcg::Distance(optimum, middle) <= reach)
-            cand[count++] = {optimum, 0.0, between, 0.0, true};
-        if (offEdgeMinima && ctx.params.optimalPlacement && nearestMinimum(q, middle, optimum) && besideTheEdge(optimum, p0, p1))
+        if (offEdgeMinima && ctx.params.optimalPlacement && quadricPlacement(q, p0, p1, optimum))
             cand[count++] = {optimum, 0.0, between, 0.0, true};
         for (int i = 0; i < count; ++i)
             cand[i].cost = applyQuadric(q, cand[i].p);

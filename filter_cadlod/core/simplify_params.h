@@ -19,8 +19,8 @@ struct SimplifyParams {
     double maxError = 0.0;       // never collapse beyond this error (fraction of bbox diagonal)
 
     // Placement: candidates are both endpoints, `candidatesPerEdge` evenly spaced interior
-    // points and (optimalPlacement) the quadric optimum when well conditioned and the
-    // quadric's minimum nearest the edge's middle (where its planes meet in a line). Those whose
+    // points and (optimalPlacement) the quadric optimum or, where its planes meet in a line,
+    // the point of that line nearest the edge's middle. Those whose
     // cost is within tieTolerance (relative) of the cheapest, or within the rounding of
     // float coordinates, are tied; the tied candidate with the best mean compactness of the
     // surrounding triangles wins.
