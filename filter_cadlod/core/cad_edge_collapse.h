@@ -191,10 +191,10 @@ inline bool nearestMinimum(const Quadric& q, const vcg::Point3d& m, vcg::Point3d
     return quadricMinimum(pulled, x);
 }
 
-// Whether x lies beside the segment p0 -> p1: between its ends, off it by at most a
-// tenth of its length (a chord's sag is a few hundredths of it). A minimum along a line could otherwise slide far along a crease
-// or an axis, where the quadric sees no cost but the faces around stretch past the end of
-// the crease.
+// Whether x lies beside the segment p0 -> p1: between its ends, off it by at most a tenth
+// of its length (a chord's sag is a few hundredths of it). A minimum along a line could
+// otherwise slide far along a crease or an axis, where the quadric sees no cost but the
+// faces around stretch past the end of the crease.
 inline bool besideTheEdge(const vcg::Point3d& x, const vcg::Point3d& p0, const vcg::Point3d& p1)
 {
     const vcg::Point3d e = p1 - p0;
@@ -419,15 +419,12 @@ private:
     // A quadric minimum off the edge would turn a face away from the input surface: on a
     // convex surface the minimum lies outside the chords, and where another part fits
     // closely (a pin in its bore) that is across its surface. The points of the segment
-    // lie within the chords: the collapse is evaluated again with those alone.
+    // lie within the chords: the collapse is evaluated again with those alone (IsFeasible
+    // evaluates it, and puts it back in the heap if it is no longer first).
     bool retryOnTheEdge(Context& ctx)
     {
         onTheEdgeOnly_ = true;
-        evaluate(ctx);
-        if (feasible_ && ctx.heap && !ctx.heap->empty() && this->_priority > ctx.heap->front().pri) {
-            requeue(*ctx.heap);
-            return false;
-        }
+        evaluated_ = false;
         return IsFeasible(&ctx);
     }
 
@@ -598,10 +595,10 @@ private:
     static constexpr double kSliver = 0.1;  // compactness below which a face counts as a sliver
 
     // Both endpoints, evenly spaced interior points and, with `offEdgeMinima`, the quadric's
-    // own placement (quadricPlacement), with their costs. A placement breaks a feature when it moves a pinned endpoint,
-    // or puts a vertex that must stay on a boundary polyline (it may take the other
-    // endpoint's place) between the two; evaluate() lets it off when it costs no more than
-    // the flat floor (it lies on the feature already).
+    // own placement (quadricPlacement), with their costs. A placement breaks a feature when
+    // it moves a pinned endpoint, or puts a vertex that must stay on a boundary polyline (it
+    // may take the other endpoint's place) between the two; evaluate() lets it off when it
+    // costs no more than the flat floor (it lies on the feature already).
     static int candidates(const Context& ctx, const Quadric& q, const vcg::Point3d& p0, const vcg::Point3d& p1,
                           bool v0Pinned, bool v1Pinned, bool onBoundaryLine, bool offEdgeMinima, Candidate* cand)
     {

@@ -20,10 +20,10 @@ struct SimplifyParams {
 
     // Placement: candidates are both endpoints, `candidatesPerEdge` evenly spaced interior
     // points and (optimalPlacement) the quadric optimum or, where its planes meet in a line,
-    // the point of that line nearest the edge's middle. Those whose
-    // cost is within tieTolerance (relative) of the cheapest, or within the rounding of
-    // float coordinates, are tied; the tied candidate with the best mean compactness of the
-    // surrounding triangles wins.
+    // the point of that line nearest the edge's middle. Those whose cost is within
+    // tieTolerance (relative) of the cheapest, or within the rounding of float coordinates,
+    // are tied; the tied candidate with the best mean compactness of the surrounding
+    // triangles wins.
     double tieTolerance = 0.1;
     // A collapse whose RMS error is within flatTolerance (a fraction of the bbox diagonal)
     // is free: it moves no plane a viewer could see. It may slide a feature vertex along its

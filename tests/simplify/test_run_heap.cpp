@@ -57,6 +57,12 @@ struct Session {
         run.h.push_back(vcg::LocalOptimization<TestMesh>::HeapElem(new Probe(upToDate, priority, runs)));
         std::push_heap(run.h.begin(), run.h.end());
     }
+    // Ten times as many entries as faces, none up to date.
+    void addStale()
+    {
+        for (int i = 0; i < 10; ++i)
+            add(false, i);
+    }
 };
 
 }  // namespace
@@ -64,8 +70,7 @@ struct Session {
 TEST(RunHeap, AHeapOfStaleEntriesEndsTheSessionCleanly)
 {
     Session s;
-    for (int i = 0; i < 10; ++i)
-        s.add(false, i);
+    s.addStale();
     EXPECT_FALSE(detail::runHeap(s.run));
     EXPECT_TRUE(s.run.h.empty());
     EXPECT_EQ(s.runs, 0);
@@ -75,8 +80,7 @@ TEST(RunHeap, AHeapOfStaleEntriesEndsTheSessionCleanly)
 TEST(RunHeap, WhatTheDroppingLeavesStillRuns)
 {
     Session s;
-    for (int i = 0; i < 10; ++i)
-        s.add(false, i);
+    s.addStale();
     s.add(true, 5.5);
     EXPECT_FALSE(detail::runHeap(s.run));
     EXPECT_TRUE(s.run.h.empty());
