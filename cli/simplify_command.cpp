@@ -17,6 +17,7 @@ namespace {
 struct SimplifyArgs {
     std::string input, output;
     double reduction = 0.0;
+    bool reductionGiven = false;  // --reduction on the command line (0 included)
     int faces = 0;
     double maxError = 0.0;
     ImportArgs import;
@@ -31,7 +32,7 @@ SimplifyParams paramsOf(const SimplifyArgs& a)
     p.reductionPerc = a.reduction;
     p.targetFaces = a.faces;
     p.maxError = a.maxError;
-    if (p.reductionPerc == 0 && p.targetFaces == 0 && p.maxError == 0)
+    if (!a.reductionGiven && p.targetFaces == 0 && p.maxError == 0)
         p.reductionPerc = 90.0;
     applyProtection(a.protection, p);
     return p;
@@ -46,12 +47,24 @@ void runSimplify(const SimplifyArgs& a)
     limitThreads(a.common.threads);
     CoreMesh m;
     loadMesh(a.input, m, importing);
+    // 0 % asks to remove nothing: the mesh is written as loaded (a conversion), unless a
+    // maximum error is what bounds the run.
+    if (a.reductionGiven && a.reduction == 0 && a.maxError == 0) {
+        saveMesh(a.output, m, saving);
+        progress::finish();
+        if (!a.common.quiet)
+            std::fprintf(stderr, "cadlod: %s: %d faces, written unsimplified (--reduction 0)\n", a.output.c_str(), m.fn);
+        return;
+    }
     const SimplifyStats stats = simplify(m, paramsOf(a), progress::callback);
     if (!stats.ok)
         throw InputError(a.input + ": " + stats.message);
     saveMesh(a.output, m, saving);
     progress::finish();
-    if (!a.common.quiet)
+    if (!a.common.quiet && stats.stoppedBy.empty())  // nothing to do: the message says why
+        std::fprintf(stderr, "cadlod: %s: %d faces, written unsimplified: %s\n", a.output.c_str(), stats.facesAfter,
+                     stats.message.c_str());
+    else if (!a.common.quiet)
         std::fprintf(stderr, "cadlod: %s: %d -> %d faces (stopped by %s), largest collapse error %.6g (%.4f%% diag)\n",
                      a.output.c_str(), stats.facesBefore, stats.facesAfter, stats.stoppedBy.c_str(),
                      stats.largestError, 100.0 * stats.largestErrorFraction());
@@ -68,7 +81,7 @@ void addSimplifyCommand(CLI::App& app)
     CLI::App* cmd = app.add_subcommand("simplify", "Simplify a mesh once (CAD quadric edge collapse)");
     cmd->add_option("input", args->input, "Input file")->required();
     cmd->add_option("-o,--output", args->output, "Output (.ply, .obj, .stl or .flt)")->required();
-    auto* reduction = cmd->add_option("--reduction", args->reduction, "Remove this % of the faces (default 90)")
+    auto* reduction = cmd->add_option("--reduction", args->reduction, "Remove this % of the faces (default 90; 0 writes the mesh unsimplified)")
                           ->check(CLI::Range(0.0, 100.0));
     auto* faces = cmd->add_option("--faces", args->faces, "Stop at this many faces")->check(CLI::PositiveNumber);
     cmd->add_option("--max-error", args->maxError, "Never collapse beyond this error (fraction of the diagonal)")
@@ -78,7 +91,10 @@ void addSimplifyCommand(CLI::App& app)
     addProtectionOptions(*cmd, args->protection);
     addExportOptions(*cmd, args->exporting);
     addCommonOptions(*cmd, args->common);
-    cmd->callback([args] { runSimplify(*args); });
+    cmd->callback([args, reduction] {
+        args->reductionGiven = reduction->count() > 0;
+        runSimplify(*args);
+    });
 }
 
 }  // namespace cadlod::cli

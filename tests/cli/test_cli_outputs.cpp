@@ -133,6 +133,24 @@ int trianglesOf(const std::string& path)
     return at == std::string::npos ? -1 : std::stoi(info.stdoutText.substr(at + 9));
 }
 
+// 0 % asks to remove nothing: the mesh is written as loaded (it was once read as "no
+// reduction given" and simplified by the default 90 %). A face target at or above the
+// mesh's says why nothing was done.
+TEST(CliOutputs, SimplifyAtZeroPercentWritesTheMeshUnsimplified)
+{
+    const std::string dir = freshDirectory("zero");
+    writeDrilledPlatePly(dir + "/plate.ply");
+    const CliRun zero = runCadlod({"simplify", dir + "/plate.ply", "-o", dir + "/zero.ply", "--reduction", "0"});
+    ASSERT_EQ(zero.exitCode, 0) << zero.stderrText;
+    EXPECT_EQ(trianglesOf(dir + "/zero.ply"), 256);
+    EXPECT_NE(zero.stderrText.find("written unsimplified"), std::string::npos) << zero.stderrText;
+    const CliRun above = runCadlod({"simplify", dir + "/plate.ply", "-o", dir + "/above.ply", "--faces", "1000"});
+    ASSERT_EQ(above.exitCode, 0) << above.stderrText;
+    EXPECT_EQ(trianglesOf(dir + "/above.ply"), 256);
+    EXPECT_NE(above.stderrText.find("nothing to do"), std::string::npos) << above.stderrText;
+    EXPECT_EQ(above.stderrText.find("stopped by )"), std::string::npos) << above.stderrText;
+}
+
 // Far below what its hole allows, a drilled plate gets there by closing the hole, and the
 // command says so; --keep-tunnels keeps the hole and stops above the target.
 TEST(CliOutputs, SimplifyClosesATunnelUnlessToldToKeepIt)
