@@ -18,9 +18,9 @@ struct ImportArgs {
     std::string normals = "keep";  // keep|recompute
 };
 
-struct ProtectionArgs {
-    double featureAngle = 30.0;
-    double featurePenalty = 16.0;
+struct ProtectionArgs {  // defaults: the simplifier's own
+    double featureAngle = SimplifyParams{}.featureAngle;
+    double featurePenalty = SimplifyParams{}.featurePenalty;
     bool noPartBorders = false;
     bool noColorBorders = false;
     bool noBoundary = false;
