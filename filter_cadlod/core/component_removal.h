@@ -3,15 +3,20 @@
 // assembly of a hundred screws keeps hundreds of faces however far it is simplified, and
 // squeezing a screw into a tetrahedron makes about as much error as dropping it. So the
 // removal competes with the collapses on the same terms: its cost is the quadric cost of
-// moving every plane of the component by its size (the distance a viewer's ray may miss by),
-// ranked, like any feature break, at featurePenalty times that. The largest component is
-// never removed; a maximum error forbids removing anything larger than it. Neither is a
+// moving every plane of the component by its removal distance, ranked, like any feature
+// break, at featurePenalty times that. The removal distance is the component's size (the
+// distance a viewer's ray may miss by), or, where it stands off the rest of the model, the
+// distance of its farthest vertex from the rest's surface: a small part floating beside a
+// body, a tip beyond it, leaves a gap that wide where it was. The largest component is
+// never removed; a maximum error forbids removing anything whose removal distance exceeds
+// it. Neither is a
 // component with a vertex where another component has one: that is a piece of a surface
 // exported unwelded (a triangle soup, faces split at a seam), and removing it opens a hole.
 #pragma once
 
 #include "cad_edge_collapse.h"
 #include "components.h"
+#include "triangle_tree.h"
 
 #include <vcg/complex/algorithms/local_optimization.h>
 
@@ -42,6 +47,9 @@ public:
         const double penalty = std::max(1.0, ctx.params.featurePenalty);
         const std::size_t removable =
             ctx.mayRemoveLargestComponent || components.empty() ? components.size() : components.size() - 1;
+        // Where the rest of the model is in other meshes (pieces simplified side by side),
+        // the gap to it cannot be measured here: the size stands for it.
+        const RestOfModel rest(m, components, removable, !ctx.mayRemoveLargestComponent);
         for (std::size_t i = 0; i < removable; ++i) {
             const Component<MeshType>& c = components[i];
             if (ctx.maxErrorAbs > 0 && c.size() > ctx.maxErrorAbs)
@@ -58,8 +66,11 @@ public:
             vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
             for (VertexType* v : vertices)
                 weight += ctx.quadrics.area(v) / 3.0;
-            const double cost = penalty * weight * c.size() * c.size();
-            heap.push_back(HeapElem(new ComponentRemoval(std::move(vertices), c.size(), c.name,
+            const double distance = rest.farthest(vertices, i, c.size());
+            if (ctx.maxErrorAbs > 0 && distance > ctx.maxErrorAbs)
+                continue;
+            const double cost = penalty * weight * distance * distance;
+            heap.push_back(HeapElem(new ComponentRemoval(std::move(vertices), c.size(), distance, c.name,
                                                          ScalarType(ctx.priority(cost, weight, 1.0)))));
         }
     }
@@ -81,14 +92,101 @@ public:
         removeComponent(m, c);
         ++ctx.stats->removedComponents;
         ctx.stats->largestRemovedComponent = std::max(ctx.stats->largestRemovedComponent, size_);
-        ctx.largestError = std::max(ctx.largestError, size_);
-        char line[256];
-        std::snprintf(line, sizeof line, "removed %s whole (%zu faces, size %.4g %% of the diagonal)", name_.c_str(),
-                      c.faces.size(), ctx.diagonal > 0 ? 100.0 * size_ / ctx.diagonal : 0.0);
+        ctx.largestError = std::max(ctx.largestError, distance_);
+        char line[320];
+        const double percent = ctx.diagonal > 0 ? 100.0 / ctx.diagonal : 0.0;
+        if (distance_ > size_)
+            std::snprintf(line, sizeof line,
+                          "removed %s whole (%zu faces, size %.4g %% of the diagonal, standing %.4g %% off the rest)",
+                          name_.c_str(), c.faces.size(), percent * size_, percent * distance_);
+        else
+            std::snprintf(line, sizeof line, "removed %s whole (%zu faces, size %.4g %% of the diagonal)",
+                          name_.c_str(), c.faces.size(), percent * size_);
         ctx.stats->relaxed.push_back(line);
     }
 
 private:
+    // The surface of every component, each face knowing its component: how far a
+    // component's vertices stand from the surface of all the others.
+    class RestOfModel
+    {
+    public:
+        // Indexes the faces when `measure` and some of the first `removable` components
+        // may go; otherwise farthest() is its floor.
+        RestOfModel(MeshType& m, const std::vector<Component<MeshType>>& components, std::size_t removable,
+                    bool measure)
+        {
+            if (!measure || removable == 0 || components.size() < 2)
+                return;
+            std::vector<FaceType*> faces;
+            for (std::size_t c = 0; c < components.size(); ++c)
+                for (FaceType* f : components[c].faces) {
+                    faces.push_back(f);
+                    componentOf_.push_back(c);
+                }
+            tree_ = TriangleTree::of(m, faces);
+            vcg::Box3d all;
+            for (const Component<MeshType>& c : components)
+                all.Add(c.box);
+            maxDistance_ = 4 * all.Diag() + 1;
+        }
+
+        // The largest distance from the extreme vertices of `vertices` (of component
+        // `component`) to the nearest face of another component, or `floor` if that is
+        // larger. The vertex farthest from the rest is one of the component's extremes; and
+        // each search has to pass over every face of the component's own that lies nearer,
+        // so searching from every vertex of a large component would take its size squared.
+        double farthest(const std::vector<VertexType*>& vertices, std::size_t component, double floor) const
+        {
+            double farthest = floor;
+            if (tree_.empty())
+                return farthest;
+            auto another = [&](std::size_t k) { return componentOf_[k] != component; };
+            for (const VertexType* v : extremes(vertices)) {
+                const vcg::Point3d p = vcg::Point3d::Construct(v->cP());
+                double d = 0.0;
+                if (tree_.closest(p, farthest, d, another) >= 0)
+                    continue;
+                if (tree_.closest(p, maxDistance_, d, another) >= 0)
+                    farthest = std::max(farthest, d);
+            }
+            return farthest;
+        }
+
+    private:
+        // The vertices farthest along the axes and the box diagonals, both ways (at most 14).
+        static std::vector<const VertexType*> extremes(const std::vector<VertexType*>& vertices)
+        {
+            std::vector<const VertexType*> out;
+            if (vertices.empty())
+                return out;
+            std::vector<vcg::Point3d> directions;
+            for (int axis = 0; axis < 3; ++axis) {
+                vcg::Point3d d(0, 0, 0);
+                d[axis] = 1;
+                directions.push_back(d);
+                directions.push_back(-d);
+            }
+            for (int x = -1; x <= 1; x += 2)
+                for (int y = -1; y <= 1; y += 2)
+                    for (int z = -1; z <= 1; z += 2)
+                        directions.push_back(vcg::Point3d(x, y, z));
+            for (const vcg::Point3d& d : directions) {
+                const VertexType* best = vertices.front();
+                for (const VertexType* v : vertices)
+                    if (vcg::Point3d::Construct(v->cP()) * d > vcg::Point3d::Construct(best->cP()) * d)
+                        best = v;
+                if (std::find(out.begin(), out.end(), best) == out.end())
+                    out.push_back(best);
+            }
+            return out;
+        }
+
+        TriangleTree tree_{{}, {}};
+        std::vector<std::size_t> componentOf_;  // per indexed face
+        double maxDistance_ = 1.0;
+    };
+
     // Per component: whether one of its vertices stands exactly where a vertex of another
     // component stands.
     static std::vector<bool> touchingOthers(MeshType& m, const std::vector<Component<MeshType>>& components)
@@ -103,8 +201,9 @@ private:
         return touching;
     }
 
-    ComponentRemoval(std::vector<VertexType*> vertices, double size, std::string name, ScalarType priority)
-        : vertices_(std::move(vertices)), size_(size), name_(std::move(name)), priority_(priority)
+    ComponentRemoval(std::vector<VertexType*> vertices, double size, double distance, std::string name,
+                     ScalarType priority)
+        : vertices_(std::move(vertices)), size_(size), distance_(distance), name_(std::move(name)), priority_(priority)
     {
     }
 
@@ -147,6 +246,7 @@ private:
 
     std::vector<VertexType*> vertices_;
     double size_;
+    double distance_;  // removal distance: the size, or the gap it leaves if wider
     std::string name_;
     ScalarType priority_;
 };

@@ -110,6 +110,35 @@ TEST(SimplifyRelaxation, SmallestComponentsAreRemovedWholeAndLogged)
     EXPECT_LT(distanceToSurface(m, vcg::Point3d(100, 100, 0)), 0.01);
 }
 
+// Removing a part leaves a gap as wide as its size where it sat on the rest, but as wide as
+// its distance where it stands off it: a small part floating above a plate is dearer to
+// remove than the same part resting on it. Asked for a face count that one of them must go
+// for, the simplifier removes the one resting on the plate; ranked by size alone the two
+// tied, and the floating one went first (a Hausdorff distance of 42, where the other's
+// removal stays under 4).
+TEST(SimplifyRelaxation, APartStandingOffTheRestCostsItsDistanceToRemove)
+{
+    CadBuilder b;
+    b.currentPart = 0;
+    stripPlate(b, 100, 100, 10, 4);
+    b.currentPart = 1;  // floating 40 above it (first: the tie of equal sizes removed it)
+    b.translate(stripPlate(b, 2, 2, 2, 1), 30, 40, 50);
+    b.currentPart = 2;  // resting on the plate, 0.1 above it (not welded to it)
+    b.translate(stripPlate(b, 2, 2, 2, 1), 60, 40, 10.1);
+    TestMesh input, m;
+    b.build(input, true);
+    copyMesh(m, input);
+    SimplifyParams p;
+    p.targetFaces = 16;
+    const SimplifyStats s = simplify(m, p);
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_LE(m.fn, 16);
+    EXPECT_EQ(s.removedComponents, 1);
+    EXPECT_LT(distanceToSurface(m, vcg::Point3d(31, 41, 51)), 1.5) << "the floating part went";
+    const SymmetricHausdorff h = symmetricHausdorff(input, m, 20000);
+    EXPECT_LT(h.max(), 4.0);
+}
+
 // A max error forbids removing components larger than it.
 TEST(SimplifyRelaxation, MaxErrorKeepsComponentsLargerThanIt)
 {
