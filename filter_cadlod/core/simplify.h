@@ -26,6 +26,10 @@ namespace cadlod {
 // Below this share of its input faces a mesh is in the far field, where the input-surface
 // check gives way (issue 13): the paper's levels and issue 14's reductions stop at 95 %.
 inline constexpr double kFacingFarField = 0.05;
+// A collapse that turns a face away from the input surface is priced at this many times the
+// feature penalty. A broken feature's error is in the quadric (its constraint planes); a
+// face lit as the far side is an error the quadric does not see at all.
+inline constexpr double kFacingOverFeature = 2.0;
 
 namespace detail {
 
@@ -243,7 +247,7 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     ctx.storeInputNormals(m);
     if (params.normalCheck && params.facingCheck) {
         ctx.surface = std::make_shared<InputSurface>(m, ctx.diagonal);
-        ctx.facingPenalty = params.featurePenalty;
+        ctx.facingPenalty = kFacingOverFeature * params.featurePenalty;
         ctx.facingFloor = int(kFacingFarField * m.fn);
         ctx.faceCount = &m.fn;
     }
@@ -322,7 +326,8 @@ bool runHeap(vcg::LocalOptimization<MeshType>& session)
 //      at featurePenalty times their error (cad_edge_collapse.h), and so is removing a
 //      small component whole (component_removal.h): they run when they are cheaper;
 //      so is a collapse that turns a face away from the input surface near it
-//      (input_surface.h), which a viewer sees lit as the wrong side; in the far field (the
+//      (input_surface.h), which a viewer sees lit as the wrong side, at kFacingOverFeature
+//      times that penalty; in the far field (the
 //      mesh down to kFacingFarField of its faces) that check gives way, logged; and so is
 //      cutting a tunnel whose rim has shrunk to three edges, where the link condition
 //      refuses every collapse (tunnel_cut.h), logged;

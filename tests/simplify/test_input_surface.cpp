@@ -140,9 +140,9 @@ TEST(FoldedFaces, AFaceAtExactlyTheLimitIsNotTurnedMore)
 }
 
 // The chip with eight bent leads (2 050 faces) at 93 and 95 %: the face target is reached, and
-// the collapses that turn a face over 90° from the input face nearest to it, priced like
-// feature breaks (featurePenalty times their cost), run only where everything else costs
-// that much more: none at 93 or 95 %. Without the check the same runs turn at least 2 and 8
+// the collapses that turn a face over 90° from the input face nearest to it, priced at twice
+// a feature break (kFacingOverFeature × featurePenalty times their cost), run only where
+// everything else costs that much more: none at 93 or 95 %. Without the check the same runs turn at least 2 and 8
 // faces away.
 TEST(SimplifyFacing, GullWingLeadsKeepFacingTheirSurface)
 {
