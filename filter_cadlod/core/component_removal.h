@@ -49,7 +49,7 @@ public:
             ctx.mayRemoveLargestComponent || components.empty() ? components.size() : components.size() - 1;
         // Where the rest of the model is in other meshes (pieces simplified side by side),
         // the gap to it cannot be measured here: the size stands for it.
-        const RestOfModel rest(m, components, removable, !ctx.mayRemoveLargestComponent);
+        RestOfModel rest(m, components, !ctx.mayRemoveLargestComponent);
         for (std::size_t i = 0; i < removable; ++i) {
             const Component<MeshType>& c = components[i];
             if (ctx.maxErrorAbs > 0 && c.size() > ctx.maxErrorAbs)
@@ -93,15 +93,13 @@ public:
         ++ctx.stats->removedComponents;
         ctx.stats->largestRemovedComponent = std::max(ctx.stats->largestRemovedComponent, size_);
         ctx.largestError = std::max(ctx.largestError, distance_);
-        char line[320];
         const double percent = ctx.diagonal > 0 ? 100.0 / ctx.diagonal : 0.0;
+        char standingOff[64] = "";
         if (distance_ > size_)
-            std::snprintf(line, sizeof line,
-                          "removed %s whole (%zu faces, size %.4g %% of the diagonal, standing %.4g %% off the rest)",
-                          name_.c_str(), c.faces.size(), percent * size_, percent * distance_);
-        else
-            std::snprintf(line, sizeof line, "removed %s whole (%zu faces, size %.4g %% of the diagonal)",
-                          name_.c_str(), c.faces.size(), percent * size_);
+            std::snprintf(standingOff, sizeof standingOff, ", standing %.4g %% off the rest", percent * distance_);
+        char line[320];
+        std::snprintf(line, sizeof line, "removed %s whole (%zu faces, size %.4g %% of the diagonal%s)", name_.c_str(),
+                      c.faces.size(), percent * size_, standingOff);
         ctx.stats->relaxed.push_back(line);
     }
 
@@ -111,24 +109,12 @@ private:
     class RestOfModel
     {
     public:
-        // Indexes the faces when `measure` and some of the first `removable` components
-        // may go; otherwise farthest() is its floor.
-        RestOfModel(MeshType& m, const std::vector<Component<MeshType>>& components, std::size_t removable,
-                    bool measure)
+        // Without `measure`, farthest() is its floor. The faces are indexed at the first
+        // distance asked for: where every small component touches another (an unwelded
+        // export) or exceeds the maximum error, none is.
+        RestOfModel(MeshType& m, const std::vector<Component<MeshType>>& components, bool measure)
+            : m_(m), components_(components), measure_(measure && components.size() >= 2)
         {
-            if (!measure || removable == 0 || components.size() < 2)
-                return;
-            std::vector<FaceType*> faces;
-            for (std::size_t c = 0; c < components.size(); ++c)
-                for (FaceType* f : components[c].faces) {
-                    faces.push_back(f);
-                    componentOf_.push_back(c);
-                }
-            tree_ = TriangleTree::of(m, faces);
-            vcg::Box3d all;
-            for (const Component<MeshType>& c : components)
-                all.Add(c.box);
-            maxDistance_ = 4 * all.Diag() + 1;
         }
 
         // The largest distance from the extreme vertices of `vertices` (of component
@@ -136,11 +122,13 @@ private:
         // larger. The vertex farthest from the rest is one of the component's extremes; and
         // each search has to pass over every face of the component's own that lies nearer,
         // so searching from every vertex of a large component would take its size squared.
-        double farthest(const std::vector<VertexType*>& vertices, std::size_t component, double floor) const
+        double farthest(const std::vector<VertexType*>& vertices, std::size_t component, double floor)
         {
             double farthest = floor;
-            if (tree_.empty())
+            if (!measure_)
                 return farthest;
+            if (tree_.empty())
+                index();
             auto another = [&](std::size_t k) { return componentOf_[k] != component; };
             for (const VertexType* v : extremes(vertices)) {
                 const vcg::Point3d p = vcg::Point3d::Construct(v->cP());
@@ -154,6 +142,22 @@ private:
         }
 
     private:
+        // Every face of every component, each knowing its component.
+        void index()
+        {
+            std::vector<FaceType*> faces;
+            for (std::size_t c = 0; c < components_.size(); ++c)
+                for (FaceType* f : components_[c].faces) {
+                    faces.push_back(f);
+                    componentOf_.push_back(c);
+                }
+            tree_ = TriangleTree::of(m_, faces);
+            vcg::Box3d all;
+            for (const Component<MeshType>& c : components_)
+                all.Add(c.box);
+            maxDistance_ = 4 * all.Diag() + 1;
+        }
+
         // The vertices farthest along the axes and the box diagonals, both ways (at most 14).
         static std::vector<const VertexType*> extremes(const std::vector<VertexType*>& vertices)
         {
@@ -182,6 +186,9 @@ private:
             return out;
         }
 
+        MeshType& m_;
+        const std::vector<Component<MeshType>>& components_;
+        bool measure_;
         TriangleTree tree_{{}, {}};
         std::vector<std::size_t> componentOf_;  // per indexed face
         double maxDistance_ = 1.0;
