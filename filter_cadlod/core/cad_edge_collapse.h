@@ -52,6 +52,7 @@
 #include <cstdlib>
 #include <limits>
 #include <memory>
+#include <memory_resource>
 #include <vector>
 
 namespace cadlod {
@@ -73,6 +74,38 @@ struct PlacementScore {
     bool valid = false;
     bool flipped = false;
     double meanCompactness = 0.0;
+};
+
+// Heap entries are made and deleted by the million (every push and every re-queue): they
+// come from a pool per thread, which takes memory from malloc a chunk of entries at a time,
+// and gives it all back when the thread's last entry is deleted (a session's end).
+class EntryPool
+{
+public:
+    static void* allocate(std::size_t size)
+    {
+        Local& l = local();
+        ++l.live;
+        return l.pool.allocate(size);
+    }
+    static void deallocate(void* p, std::size_t size)
+    {
+        Local& l = local();
+        l.pool.deallocate(p, size);
+        if (--l.live == 0)
+            l.pool.release();
+    }
+
+private:
+    struct Local {
+        std::pmr::unsynchronized_pool_resource pool;
+        std::size_t live = 0;
+    };
+    static Local& local()
+    {
+        thread_local Local l;
+        return l;
+    }
 };
 
 // What float coordinates resolve, as a share of their magnitude (a few units in the last
@@ -237,6 +270,9 @@ public:
     using ScalarType = typename MeshType::ScalarType;
     using Context = CollapseContext<MeshType>;
     using VFIterator = vcg::face::VFIterator<FaceType>;
+
+    static void* operator new(std::size_t size) { return EntryPool::allocate(size); }
+    static void operator delete(void* p, std::size_t size) { EntryPool::deallocate(p, size); }
 
     CadEdgeCollapse(const VertexPair& p, int mark, vcg::BaseParameterClass* pp)
     {

@@ -43,10 +43,12 @@ public:
     static void push(MeshType& m, Context& ctx, HeapType& heap)
     {
         const std::vector<Component<MeshType>> components = connectedComponents(m);
-        const std::vector<bool> touching = touchingOthers(m, components);
-        const double penalty = std::max(1.0, ctx.params.featurePenalty);
         const std::size_t removable =
             ctx.mayRemoveLargestComponent || components.empty() ? components.size() : components.size() - 1;
+        if (removable == 0)
+            return;  // a single part: nothing to find out about touching parts or gaps
+        const std::vector<bool> touching = touchingOthers(m, components);
+        const double penalty = std::max(1.0, ctx.params.featurePenalty);
         // Where the rest of the model is in other meshes (pieces simplified side by side),
         // the gap to it cannot be measured here: the size stands for it.
         RestOfModel rest(m, components, !ctx.mayRemoveLargestComponent);
