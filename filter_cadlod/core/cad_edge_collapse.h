@@ -39,6 +39,7 @@
 #pragma once
 
 #include "cad_quadrics.h"
+#include "collapse_heap.h"
 #include "compactness.h"
 #include "feature_edges.h"
 #include "input_surface.h"
@@ -442,14 +443,12 @@ private:
     // The heap owns and deletes the popped entry: a copy, now evaluated, goes back in.
     void requeue(HeapType& heap) const
     {
-        heap.push_back(HeapElem(new CadEdgeCollapse(*this)));
-        std::push_heap(heap.begin(), heap.end());
+        heapPush(heap, HeapElem(new CadEdgeCollapse(*this)));
     }
 
     static void push(HeapType& heap, VertexType* a, VertexType* b, vcg::BaseParameterClass* pp)
     {
-        heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(a, b), static_cast<Context*>(pp)->mark, pp)));
-        std::push_heap(heap.begin(), heap.end());
+        heapPush(heap, HeapElem(new CadEdgeCollapse(VertexPair(a, b), static_cast<Context*>(pp)->mark, pp)));
     }
 
     // A quadric minimum off the edge would turn a face away from the input surface: on a
@@ -588,31 +587,45 @@ private:
         return n;
     }
 
+    // The compactness face f of the ring takes with the new vertex at p, or kTurned if the
+    // normal checks refuse it (it turns too far, or away from the input surface).
+    static constexpr double kTurned = -1.0;
+    static double faceAt(const Context& ctx, const RingFace& f, const vcg::Point3d& p)
+    {
+        const vcg::Point3d ua = f.a - p, ub = f.b - p;
+        const vcg::Point3d n = ua ^ ub;
+        const double doubleArea = n.Norm();
+        if (ctx.params.normalCheck) {
+            const double len = doubleArea * f.normalLength;
+            if (f.normalLength > 0 && !(len > 0 && (n * f.normal) >= ctx.cosNormalLimit * len))
+                return kTurned;
+            if (n * f.original < 0)
+                return kTurned;  // turned away from the input surface
+        }
+        return compactnessFrom(doubleArea, ua.SquaredNorm() + ub.SquaredNorm() + f.abSquared);
+    }
+
     // Mean compactness of the faces around the new vertex at p; invalid if one of them would
-    // fall below `floor`, flipped if one turns too far.
-    PlacementScore score(const Context& ctx, const vcg::Point3d& p, double floor) const
+    // fall below `floor`, flipped if one turns too far. `failed` is the ring face that made
+    // the last candidate invalid (-1: none): most refused edges are refused by one face for
+    // every candidate, so it is tried first. It is set to the face that fails this one.
+    PlacementScore score(const Context& ctx, const vcg::Point3d& p, double floor, int& failed) const
     {
         PlacementScore s;
-        double sum = 0.0;
-        for (const RingFace& f : ctx.ring) {
-            const vcg::Point3d ua = f.a - p, ub = f.b - p;
-            const vcg::Point3d n = ua ^ ub;
-            const double doubleArea = n.Norm();
-            if (ctx.params.normalCheck) {
-                const double len = doubleArea * f.normalLength;
-                if (f.normalLength > 0 && !(len > 0 && (n * f.normal) >= ctx.cosNormalLimit * len)) {
-                    s.flipped = true;
-                    return s;
-                }
-                if (n * f.original < 0) {
-                    s.flipped = true;  // turned away from the input surface
-                    return s;
-                }
-            }
-            const double edges = ua.SquaredNorm() + ub.SquaredNorm() + f.abSquared;
-            const double c = compactnessFrom(doubleArea, edges);
+        if (failed >= 0) {
+            const double c = faceAt(ctx, ctx.ring[std::size_t(failed)], p);
+            s.flipped = c == kTurned;
             if (c < floor)
                 return s;
+        }
+        double sum = 0.0;
+        for (std::size_t i = 0; i < ctx.ring.size(); ++i) {
+            const double c = faceAt(ctx, ctx.ring[i], p);
+            if (c < floor) {
+                s.flipped = c == kTurned;
+                failed = int(i);
+                return s;
+            }
             sum += c;
         }
         s.meanCompactness = sum / double(ctx.ring.size());
@@ -760,10 +773,11 @@ private:
         int best = -1;
         PlacementScore bestScore;
         bool anyFlip = false;
+        int failed = -1;
         for (int i = 0; i < count; ++i) {
             if (cand[i].ranked > tieLimit)
                 continue;
-            const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]));
+            const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed);
             anyFlip |= s.flipped;
             if (s.valid && (best < 0 || s.meanCompactness > bestScore.meanCompactness ||
                             (s.meanCompactness == bestScore.meanCompactness && cand[i].ranked < cand[best].ranked))) {
@@ -775,7 +789,7 @@ private:
             for (int i = 0; i < count; ++i) {
                 if (cand[i].ranked <= tieLimit || (best >= 0 && cand[i].ranked >= cand[best].ranked))
                     continue;
-                const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]));
+                const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed);
                 anyFlip |= s.flipped;
                 if (s.valid) {
                     best = i;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "cad_edge_collapse.h"
+#include "collapse_heap.h"
 #include "component_removal.h"
 #include "layer_metadata.h"
 #include "simplify_params.h"
@@ -299,14 +300,15 @@ bool runHeap(vcg::LocalOptimization<MeshType>& session)
     session.nPerformedOps = 0;
     while (!session.GoalReached() && !heap.empty()) {
         if (heap.size() > session.m.SimplexNumber() * session.HeapSimplexRatio) {
-            session.ClearHeap();
+            heapDropStale(heap);
             if (heap.empty())
                 break;
         }
-        std::pop_heap(heap.begin(), heap.end());
-        auto* operation = heap.back().locModPtr;
-        session.currMetric = heap.back().pri;
-        heap.pop_back();
+        const auto top = heapPop(heap);
+        auto* operation = top.locModPtr;
+        session.currMetric = top.pri;
+        if (!heap.empty())
+            __builtin_prefetch(heap.front().locModPtr);  // most likely the next one
         if (operation->IsUpToDate() && operation->IsFeasible(session.pp)) {
             ++session.nPerformedOps;
             operation->Execute(session.m, session.pp);
@@ -347,10 +349,9 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
     const bool removals = ctx.params.relaxToReachTarget && (stats.targetFaces > 0 || ctx.maxErrorAbs > 0);
     auto fillHeap = [&] {
         session.template Init<Collapse>();
-        if (removals) {
+        if (removals)
             ComponentRemoval<MeshType>::push(m, ctx, session.h);
-            std::make_heap(session.h.begin(), session.h.end());
-        }
+        heapMake(session.h);
     };
     fillHeap();
     if (stats.targetFaces > 0)

@@ -19,6 +19,7 @@
 #pragma once
 
 #include "cad_edge_collapse.h"
+#include "collapse_heap.h"
 #include "components.h"
 #include "layer_metadata.h"
 
@@ -117,8 +118,7 @@ public:
             }
         }
         if (best) {
-            ctx.heap->push_back(HeapElem(new TunnelCut({a, b, best}, ctx.mark, bestPriority)));
-            std::push_heap(ctx.heap->begin(), ctx.heap->end());
+            heapPush(*ctx.heap, HeapElem(new TunnelCut({a, b, best}, ctx.mark, bestPriority)));
         }
     }
 

@@ -54,8 +54,7 @@ struct Session {
     }
     void add(bool upToDate, double priority)
     {
-        run.h.push_back(vcg::LocalOptimization<TestMesh>::HeapElem(new Probe(upToDate, priority, runs)));
-        std::push_heap(run.h.begin(), run.h.end());
+        heapPush(run.h, vcg::LocalOptimization<TestMesh>::HeapElem(new Probe(upToDate, priority, runs)));
     }
     // Ten times as many entries as faces, none up to date.
     void addStale()
