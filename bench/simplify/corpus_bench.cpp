@@ -394,6 +394,56 @@ void printWithinBestOfOthers(const std::vector<std::string>& tools, std::vector<
     std::printf(".\n");
 }
 
+// cadlod against the peers that keep issue 14's other rules on the same part: no more faces
+// turned over 90° from the input than cadlod's, no new non-manifold edge. A peer that
+// reaches a lower Hausdorff distance by collapsing a chip's lead across its bend (turned
+// faces) or by pinching two sheets together (non-manifold edges) sets a bar cadlod is not
+// allowed to reach that way; this line shows the same targets judged without those bars.
+struct CleanPeerCounts {
+    int judged = 0, shadingOk = 0, hausdorffOk = 0, sliverOk = 0, hausdorffAbove15 = 0;
+    void add(const CleanPeerCounts& o)
+    {
+        judged += o.judged, shadingOk += o.shadingOk, hausdorffOk += o.hausdorffOk, sliverOk += o.sliverOk;
+        hausdorffAbove15 += o.hausdorffAbove15;
+    }
+};
+
+CleanPeerCounts againstCleanPeers(const std::vector<std::string>& tools, std::vector<std::map<std::string, Row>>& parts)
+{
+    CleanPeerCounts n;
+    for (std::map<std::string, Row>& rows : parts) {
+        const Row& c = rows["cadlod"];
+        if (!c.ok)
+            continue;
+        double bestVisible = 1e300, bestH = 1e300, bestSliver = 1e300;
+        for (const std::string& tool : tools) {
+            const Row& p = rows[tool];
+            if (tool == "cadlod" || !reached(p) || p.folded > c.folded || p.newNonManifold > 0)
+                continue;
+            bestVisible = std::min(bestVisible, p.visible);
+            bestH = std::min(bestH, p.hMax);
+            bestSliver = std::min(bestSliver, p.slivers);
+        }
+        ++n.judged;
+        if (bestH == 1e300) {  // no peer keeps the rules: cadlod is the best that does
+            n.shadingOk += reached(c), n.hausdorffOk += reached(c), n.sliverOk += reached(c);
+            continue;
+        }
+        n.shadingOk += reached(c) && (ratio(c.visible, bestVisible) <= 1.1 || c.visible <= 0.2);
+        n.hausdorffOk += reached(c) && ratio(c.hMax, bestH) <= 1.1;
+        n.sliverOk += reached(c) && c.slivers - bestSliver <= 1.0;
+        n.hausdorffAbove15 += ratio(c.hMax, bestH) > 1.5;
+    }
+    return n;
+}
+
+void printAgainstCleanPeers(const char* what, const CleanPeerCounts& n)
+{
+    std::printf("\n%s against the peers that turn no more faces than cadlod and make no new non-manifold edge: "
+                "shading ok %d/%d, Hausdorff ok %d/%d, slivers ok %d/%d; Hausdorff above 1.5× the best of them: %d.\n",
+                what, n.shadingOk, n.judged, n.hausdorffOk, n.judged, n.sliverOk, n.judged, n.hausdorffAbove15);
+}
+
 // results[reduction][part][tool]
 using Results = std::map<double, std::vector<std::map<std::string, Row>>>;
 
@@ -606,6 +656,7 @@ int main(int argc, char** argv)
         std::string worstShadingPart, worstHausdorffPart, worstSliverPart;
     };
     Totals overall;
+    CleanPeerCounts cleanOverall;
     for (double red : reductions) {
         std::printf("\n### %g %% reduction\n\n", red);
         std::printf("| part | tris in | out | shading %% | ×best | mean |ΔI| | H max %%diag | ×best | H mean %%diag | "
@@ -669,6 +720,11 @@ int main(int argc, char** argv)
                     t.worstShadingPart.c_str(), t.worstHausdorff, t.worstHausdorffPart.c_str(), t.worstSliver,
                     t.worstSliverPart.c_str(), t.flips, t.flipParts, t.reachedTarget, t.pairs);
         printWithinBestOfOthers(tools, results[red]);
+        const CleanPeerCounts clean = againstCleanPeers(tools, results[red]);
+        char label[32];
+        std::snprintf(label, sizeof label, "%g %%, judged", red);
+        printAgainstCleanPeers(label, clean);
+        cleanOverall.add(clean);
         overall.pairs += t.pairs;
         overall.noPeer += t.noPeer;
         overall.shadingOk += t.shadingOk;
@@ -683,5 +739,6 @@ int main(int argc, char** argv)
                 "flipped faces %d, face target reached %d/%d. Wall time %.0f s.\n",
                 overall.shadingOk, judged, overall.hausdorffOk, judged, overall.sliverOk, judged, overall.flips,
                 overall.reachedTarget, overall.pairs, secondsSince(start));
+    printAgainstCleanPeers("All pairs, judged", cleanOverall);
     return 0;
 }
