@@ -366,6 +366,34 @@ double ratio(double mine, double best) { return best <= 0 ? (mine <= 0 ? 1.0 : 1
 // stopping short keeps more of the surface and would be an unfair yardstick.
 bool reached(const Row& r) { return r.ok && r.out <= r.target + std::max(2.0, 0.02 * r.target); }
 
+// The best figures on one part among the tools `counts(tool, row)` accepts, each measure on
+// its own (the best shading and the best Hausdorff may come from different tools).
+struct BestOf {
+    double visible = 1e300, hMax = 1e300, slivers = 1e300;
+    std::string visibleTool, hTool, sliverTool;  // empty: no tool counted
+};
+
+template <class Counts>
+BestOf bestOf(const std::vector<std::string>& tools, std::map<std::string, Row>& rows, Counts counts)
+{
+    BestOf b;
+    for (const std::string& tool : tools) {
+        const Row& r = rows[tool];
+        if (!counts(tool, r))
+            continue;
+        if (r.visible < b.visible) b.visible = r.visible, b.visibleTool = tool;
+        if (r.hMax < b.hMax) b.hMax = r.hMax, b.hTool = tool;
+        if (r.slivers < b.slivers) b.slivers = r.slivers, b.sliverTool = tool;
+    }
+    return b;
+}
+
+// Issue 14's bars: shading within 1.1× of the best or under 0.2 % of the pixels, Hausdorff
+// within 1.1×, slivers within 1 point.
+bool shadingWithin(const Row& r, const BestOf& b) { return ratio(r.visible, b.visible) <= 1.1 || r.visible <= 0.2; }
+bool hausdorffWithin(const Row& r, const BestOf& b) { return ratio(r.hMax, b.hMax) <= 1.1; }
+bool sliversWithin(const Row& r, const BestOf& b) { return r.slivers - b.slivers <= 1.0; }
+
 // Per tool, on how many parts it is within issue 14's tolerances of the best of the other
 // tools (shading ≤ 1.1× or ≤ 0.2 %, Hausdorff ≤ 1.1×): where the bar of the targets, the
 // best of all the others, stands for each simplifier, cadlod's peers included. Only tools
@@ -376,18 +404,14 @@ void printWithinBestOfOthers(const std::vector<std::string>& tools, std::vector<
     for (const std::string& tool : tools) {
         int judged = 0, shadingOk = 0, hausdorffOk = 0;
         for (std::map<std::string, Row>& rows : parts) {
-            double bestVisible = 1e300, bestH = 1e300;
-            for (const std::string& other : tools)
-                if (other != tool && reached(rows[other])) {
-                    bestVisible = std::min(bestVisible, rows[other].visible);
-                    bestH = std::min(bestH, rows[other].hMax);
-                }
-            if (bestH == 1e300 || !rows[tool].ok)
+            const BestOf best =
+                bestOf(tools, rows, [&](const std::string& other, const Row& r) { return other != tool && reached(r); });
+            if (best.hTool.empty() || !rows[tool].ok)
                 continue;
             const Row& r = rows[tool];
             ++judged;
-            shadingOk += reached(r) && (ratio(r.visible, bestVisible) <= 1.1 || r.visible <= 0.2);
-            hausdorffOk += reached(r) && ratio(r.hMax, bestH) <= 1.1;
+            shadingOk += reached(r) && shadingWithin(r, best);
+            hausdorffOk += reached(r) && hausdorffWithin(r, best);
         }
         std::printf("%s %s %d/%d/%d", tool == tools.front() ? "" : ";", tool.c_str(), shadingOk, hausdorffOk, judged);
     }
@@ -415,24 +439,18 @@ CleanPeerCounts againstCleanPeers(const std::vector<std::string>& tools, std::ve
         const Row& c = rows["cadlod"];
         if (!c.ok)
             continue;
-        double bestVisible = 1e300, bestH = 1e300, bestSliver = 1e300;
-        for (const std::string& tool : tools) {
-            const Row& p = rows[tool];
-            if (tool == "cadlod" || !reached(p) || p.folded > c.folded || p.newNonManifold > 0)
-                continue;
-            bestVisible = std::min(bestVisible, p.visible);
-            bestH = std::min(bestH, p.hMax);
-            bestSliver = std::min(bestSliver, p.slivers);
-        }
+        const BestOf best = bestOf(tools, rows, [&](const std::string& tool, const Row& p) {
+            return tool != "cadlod" && reached(p) && p.folded <= c.folded && p.newNonManifold == 0;
+        });
         ++n.judged;
-        if (bestH == 1e300) {  // no peer keeps the rules: cadlod is the best that does
+        if (best.hTool.empty()) {  // no peer keeps the rules: cadlod is the best that does
             n.shadingOk += reached(c), n.hausdorffOk += reached(c), n.sliverOk += reached(c);
             continue;
         }
-        n.shadingOk += reached(c) && (ratio(c.visible, bestVisible) <= 1.1 || c.visible <= 0.2);
-        n.hausdorffOk += reached(c) && ratio(c.hMax, bestH) <= 1.1;
-        n.sliverOk += reached(c) && c.slivers - bestSliver <= 1.0;
-        n.hausdorffAbove15 += ratio(c.hMax, bestH) > 1.5;
+        n.shadingOk += reached(c) && shadingWithin(c, best);
+        n.hausdorffOk += reached(c) && hausdorffWithin(c, best);
+        n.sliverOk += reached(c) && sliversWithin(c, best);
+        n.hausdorffAbove15 += ratio(c.hMax, best.hMax) > 1.5;
     }
     return n;
 }
@@ -670,37 +688,27 @@ int main(int argc, char** argv)
                 std::printf("| %s | failed |\n", name.c_str());
                 continue;
             }
-            double bestVisible = 1e300, bestH = 1e300, bestSliver = 1e300;
-            std::string bestVisibleTool, bestHTool, bestSliverTool;
-            for (const std::string& tool : tools) {
-                if (tool == "cadlod")
-                    continue;
-                const Row& p = results[red][pi][tool];
-                if (!reached(p))
-                    continue;
-                if (p.visible < bestVisible) bestVisible = p.visible, bestVisibleTool = tool;
-                if (p.hMax < bestH) bestH = p.hMax, bestHTool = tool;
-                if (p.slivers < bestSliver) bestSliver = p.slivers, bestSliverTool = tool;
-            }
-            const bool anyPeer = !bestVisibleTool.empty();
+            const BestOf best = bestOf(tools, results[red][pi],
+                                       [](const std::string& tool, const Row& p) { return tool != "cadlod" && reached(p); });
+            const bool anyPeer = !best.visibleTool.empty();
             ++t.pairs;
             t.reachedTarget += reached(c);
             t.flips += c.folded;
             t.flipParts += c.folded > 0;
             std::string shadingRatio = "-", hRatio = "-", sliverDelta = "-";
             if (anyPeer) {
-                const double rs = ratio(c.visible, bestVisible), rh = ratio(c.hMax, bestH);
-                const double ds = c.slivers - bestSliver;
-                t.shadingOk += rs <= 1.1 || c.visible <= 0.2;
-                t.hausdorffOk += rh <= 1.1;
-                t.sliverOk += ds <= 1.0;
+                const double rs = ratio(c.visible, best.visible), rh = ratio(c.hMax, best.hMax);
+                const double ds = c.slivers - best.slivers;
+                t.shadingOk += shadingWithin(c, best);
+                t.hausdorffOk += hausdorffWithin(c, best);
+                t.sliverOk += sliversWithin(c, best);
                 if (rs > t.worstShading) t.worstShading = rs, t.worstShadingPart = name;
                 if (rh > t.worstHausdorff) t.worstHausdorff = rh, t.worstHausdorffPart = name;
                 if (ds > t.worstSliver) t.worstSliver = ds, t.worstSliverPart = name;
-                shadingRatio = ratioText(c.visible, bestVisible) + " " + bestVisibleTool;
-                hRatio = ratioText(c.hMax, bestH) + " " + bestHTool;
+                shadingRatio = ratioText(c.visible, best.visible) + " " + best.visibleTool;
+                hRatio = ratioText(c.hMax, best.hMax) + " " + best.hTool;
                 char buf[48];
-                std::snprintf(buf, sizeof buf, "%+.1f %s", ds, bestSliverTool.c_str());
+                std::snprintf(buf, sizeof buf, "%+.1f %s", ds, best.sliverTool.c_str());
                 sliverDelta = buf;
             } else {
                 ++t.noPeer;
