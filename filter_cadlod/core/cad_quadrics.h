@@ -98,6 +98,9 @@ public:
         cappedArea(v) += weight;
     }
 
+    // The most a face's plane weighs (kAreaCapOfMean of the mean face area).
+    double areaCap() const { return areaCap_; }
+
     std::size_t bytes() const
     {
         return quadric_.capacity() * sizeof(Quadric) + (area_.capacity() + cappedArea_.capacity()) * sizeof(float);
