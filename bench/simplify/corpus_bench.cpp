@@ -14,6 +14,8 @@
 //                [--files FILE,...]        more inputs: VRML (assemblies, one part per VRML part) or PLY
 //                [--far-field]             issue 13's far-field check, see below
 //                [--log]                   cadlod's log of every run (what gave way) to stderr
+//                [--meshes DIR]            every input and result as PLY (DIR/<part>_input.ply,
+//                                          DIR/<part>_<reduction>_<tool>.ply), to look into a loss
 // --raw writes every tool's row (one Markdown table); --images writes the shading
 // difference images of every run (use with --parts).
 //
@@ -202,7 +204,8 @@ struct PartContext {
     const cadlod::shading::Reference* reference = nullptr;
     int originalNonManifold = 0;
     std::string imageDir;
-    bool log = false;  // cadlod's log of every run to stderr
+    bool log = false;     // cadlod's log of every run to stderr
+    std::string meshDir;  // inputs and results as PLY (empty: none)
 };
 
 std::string reductionText(double reduction)
@@ -234,6 +237,8 @@ Row runOne(const PartContext& ctx, const std::string& tool, double reduction, in
     r.out = m.fn;
 
     vcg::tri::Allocator<TestMesh>::CompactEveryVector(m);
+    if (!ctx.meshDir.empty())
+        cadlod::test::savePly(ctx.meshDir + "/" + ctx.part->name + "_" + reductionText(reduction) + "_" + tool + ".ply", m);
     const cadlod::shading::IndexedMesh im = toIndexed(m);
     std::string prefix;
     if (!ctx.imageDir.empty())
@@ -532,7 +537,7 @@ int main(int argc, char** argv)
 {
     std::string corpus = std::string(CADLOD_SOURCE_DIR) + "/.cache/cad-corpus";
     std::string reductionsText = "50,75,90,95", toolsText = "cadlod,vcglib,vcglib-cad,cgal,meshopt";
-    std::string rawPath, imageDir;
+    std::string rawPath, imageDir, meshDir;
     std::vector<std::string> globs, files;
     bool quick = false, withBench = true, sameCount = false, farField = false, log = false;
     int resolution = 256;
@@ -554,6 +559,7 @@ int main(int argc, char** argv)
         else if (key == "--resolution") resolution = std::stoi(value());
         else if (key == "--raw") rawPath = value();
         else if (key == "--images") imageDir = value();
+        else if (key == "--meshes") meshDir = value();
         else if (key == "--same-count") sameCount = true;
         else if (key == "--files") files = split(value());
         else if (key == "--far-field") farField = true;
@@ -622,9 +628,12 @@ int main(int argc, char** argv)
         TestMesh original;
         if (!parts[pi].build(original))
             continue;
+        if (!meshDir.empty())
+            cadlod::test::savePly(meshDir + "/" + parts[pi].name + "_input.ply", original);
         const cadlod::shading::IndexedMesh input = toIndexed(original);
         const cadlod::shading::Reference reference(input.ref(), shadingOptions);
-        PartContext ctx{&parts[pi], &original, &reference, cadlod::test::nonManifoldEdges(original), imageDir, log};
+        PartContext ctx{&parts[pi], &original, &reference, cadlod::test::nonManifoldEdges(original), imageDir, log,
+                       meshDir};
         for (double red : reductions)
             for (const std::string& tool : tools) {  // cadlod first: --same-count needs its result
                 const int target = sameCount && tool != "cadlod" ? results[red][pi]["cadlod"].out : 0;
