@@ -1,6 +1,7 @@
 // Per-vertex error quadrics for the CAD edge collapse (Garland–Heckbert):
-//  - every face adds its plane to its three vertices, all with about the same weight (see
-//    kAreaCapOfMean), plus a share of their area (QuadricWeights::areaShare);
+//  - every face adds its plane to its three vertices, all with about the same weight (one
+//    area cap, plus the face's area up to one more, see kAreaCapOfMean), plus a share of
+//    their area (QuadricWeights::areaShare);
 //  - every feature edge (boundary, crease, part border) adds, for each face along it, the
 //    plane through the edge perpendicular to that face, weighted by boundaryWeight × the
 //    face's (capped) area, so that moving the edge sideways by d costs what moving that face off
@@ -92,14 +93,12 @@ public:
     // One more plane through v (a tunnel's cap), weighted by `area` as a face's plane is.
     void addPlane(const VertexType* v, const vcg::Point3d& unitNormal, double offset, double area)
     {
-        const double weight = std::min(area, areaCap_);
+        const double capped = std::min(area, areaCap_);
+        const double weight = areaCap_ + capped;
         quadric(v) += planeQuadric(unitNormal, offset, weight);
         this->area(v) += weight;
-        cappedArea(v) += weight;
+        cappedArea(v) += capped;
     }
-
-    // The most a face's plane weighs (kAreaCapOfMean of the mean face area).
-    double areaCap() const { return areaCap_; }
 
     std::size_t bytes() const
     {
@@ -107,13 +106,15 @@ public:
     }
 
 private:
-    // Face weights are areas capped at 1 % of the mean face area, so nearly every plane
-    // weighs the same, as in Garland and Heckbert's paper and CGAL; only nearly degenerate
-    // faces, whose normals say little, weigh less. Area weights let the big faces CAD
-    // exporters make of flat regions and long strips outweigh the small ones beside them
-    // and hide a deviation concentrated there; a cap at a quarter of the mean still did:
-    // 90 % Hausdorff over 7 bench tessellations, worst 0.0103 % -> 0.0070 %, mean
-    // 0.0071 % -> 0.0058 % (with the priority on the quadric cost, see cad_edge_collapse.h).
+    // A face's plane weighs one cap (1 % of the mean face area) plus its area up to one
+    // more cap, so nearly every plane weighs the same, as in Garland and Heckbert's paper
+    // and CGAL. Area weights let the big faces CAD exporters make of flat regions and long
+    // strips outweigh the small ones beside them and hide a deviation concentrated there;
+    // a cap at a quarter of the mean still did (90 % Hausdorff over 7 bench tessellations,
+    // worst 0.0103 % -> 0.0070 %, with the priority on the quadric cost). Without the floor
+    // of one cap, the faces of a small fillet or a rounded corner, a hundredth of the mean
+    // and less, weighed next to nothing, and the simplifier kept the long strips' vertices
+    // beside them and coarsened the corner (docs/benchmarks.md, issue 14's corpus).
     static constexpr double kAreaCapOfMean = 0.01;
 
     template <class MeshType>
@@ -145,7 +146,7 @@ private:
             return;
         n /= doubleArea;
         const double capped = std::min(0.5 * doubleArea, areaCap_);
-        const double area = capped + w.areaShare * 0.5 * doubleArea;
+        const double area = areaCap_ + capped + w.areaShare * 0.5 * doubleArea;
         const Quadric q = planeQuadric(n, n * p[0], area);
         for (int j = 0; j < 3; ++j) {
             quadric(f.V(j)) += q;

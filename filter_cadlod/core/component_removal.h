@@ -4,17 +4,17 @@
 // squeezing a screw into a tetrahedron makes about as much error as dropping it. So the
 // removal competes with the collapses on the same terms: its cost is the quadric cost of
 // moving every plane of the component by its removal distance, ranked, like any feature
-// break, at featurePenalty times that. Each of its faces' planes weighs at least a full
-// face's (the quadrics' area cap): a part far smaller than the faces around it weighs next
-// to nothing by area, yet removing it leaves a gap as wide as its removal distance, which
-// the Hausdorff distance sees whole. The removal distance is the component's size (the
-// distance a viewer's ray may miss by), or, where it stands off the rest of the model, the
-// distance of its farthest vertex from the rest's surface: a small part floating beside a
-// body, a tip beyond it, leaves a gap that wide where it was. The largest component is
-// never removed; a maximum error forbids removing anything whose removal distance exceeds
-// it. Neither is a
-// component with a vertex where another component has one: that is a piece of a surface
-// exported unwelded (a triangle soup, faces split at a seam), and removing it opens a hole.
+// break, at featurePenalty times that. Each of its faces' planes weighs at least the
+// quadrics' area cap (cad_quadrics.h): a part far smaller than the faces around it would
+// weigh next to nothing by area, yet removing it leaves a gap as wide as its removal
+// distance, which the Hausdorff distance sees whole. The removal distance is the
+// component's size (the distance a viewer's ray may miss by), or, where it stands off the
+// rest of the model, the distance of its farthest vertex from the rest's surface: a small
+// part floating beside a body, a tip beyond it, leaves a gap that wide where it was. The
+// largest component is never removed; a maximum error forbids removing anything whose
+// removal distance exceeds it. Neither is a component with a vertex where another
+// component has one: that is a piece of a surface exported unwelded (a triangle soup,
+// faces split at a seam), and removing it opens a hole.
 #pragma once
 
 #include "cad_edge_collapse.h"
@@ -71,7 +71,6 @@ public:
             vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
             for (VertexType* v : vertices)
                 weight += ctx.quadrics.area(v) / 3.0;
-            weight = std::max(weight, double(c.faces.size()) * ctx.quadrics.areaCap());
             const double distance = rest.farthest(vertices, i, c.size());
             if (ctx.maxErrorAbs > 0 && distance > ctx.maxErrorAbs)
                 continue;

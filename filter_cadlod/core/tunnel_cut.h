@@ -11,7 +11,11 @@
 // Its error is the cap's inradius: no point of a cap is farther than that from the loop,
 // and the loop lies on the surface. It is ranked like a feature break or a component
 // removal: featurePenalty times the quadric cost of moving the loop's share of the planes
-// by that error. A maximum error (a chain level's budget) forbids wider caps.
+// by that error, the planes weighed by their capped areas alone, without the floor every
+// plane has in the collapses' quadrics (cad_quadrics.h): a tunnel's wall is made of small
+// faces, and with the floor it weighed twice as much, so a drilled plate at 12 faces broke
+// two of its corners (17.9 off) before the cut. A maximum error (a chain level's budget)
+// forbids wider caps.
 //
 // A cut needs three vertices and two faces. They are spares reserved before the session
 // (reserveTunnelCuts), because adding elements during it would move the vertices and faces
@@ -109,7 +113,8 @@ public:
             Loop loop;
             if (!trace({a, b, c}, ctx, loop) || (ctx.maxErrorAbs > 0 && loop.inradius > ctx.maxErrorAbs))
                 continue;
-            const double weight = (ctx.quadrics.area(a) + ctx.quadrics.area(b) + ctx.quadrics.area(c)) / 3.0;
+            const double weight =
+                (ctx.quadrics.cappedArea(a) + ctx.quadrics.cappedArea(b) + ctx.quadrics.cappedArea(c)) / 3.0;
             const double cost = std::max(1.0, ctx.params.featurePenalty) * weight * loop.inradius * loop.inradius;
             const auto priority = ScalarType(ctx.priority(cost, weight, 1.0));
             if (!best || priority < bestPriority) {
