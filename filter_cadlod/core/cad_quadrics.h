@@ -4,11 +4,11 @@
 //    their area (QuadricWeights::areaShare);
 //  - every feature edge (boundary, crease, part border) adds, for each face along it, the
 //    plane through the edge perpendicular to that face, weighted by boundaryWeight × the
-//    face's (capped) area, so that moving the edge sideways by d costs what moving that face off
+//    face's weight, so that moving the edge sideways by d costs what moving that face off
 //    its plane by d costs. (A weight of |e|² would make the long thin faces CAD exporters
 //    put along features nearly free to slide: holes closed up at 90 % reduction.)
 //  - planarQuadric adds the same edge planes with a tiny weight on all other edges.
-// The accumulated weight (the capped face areas, called area below) is kept beside each
+// The accumulated weight (the face weights, called area below) is kept beside each
 // quadric, so sqrt(cost / area) is an RMS distance in model units: the collapse error
 // reported and bounded by maxError.
 #pragma once
