@@ -39,6 +39,7 @@
 #pragma once
 
 #include "cad_quadrics.h"
+#include "collapse_edge.h"
 #include "collapse_heap.h"
 #include "compactness.h"
 #include "feature_edges.h"
@@ -78,35 +79,60 @@ struct PlacementScore {
 };
 
 // Heap entries are made and deleted by the million (every push and every re-queue): they
-// come from a pool per thread, which takes memory from malloc a chunk of entries at a time,
-// and gives it all back when the thread's last entry is deleted (a session's end).
+// come from a pool, which takes memory from malloc a chunk of entries at a time, and gives
+// it all back when its last entry is deleted (a session's end). Each thread has a pool of
+// its own; a session whose heap outlives one task (a half of collapse_halves.h, whose
+// rounds may each run on another thread) brings its own and puts it in use (EntryPool::Use)
+// wherever its entries are made or deleted.
 class EntryPool
 {
 public:
+    EntryPool() = default;
+    EntryPool(const EntryPool&) = delete;
+    EntryPool& operator=(const EntryPool&) = delete;
+
+    // The pool entries come from on this thread while it lives.
+    class Use
+    {
+    public:
+        explicit Use(EntryPool& pool) : previous_(current()) { current() = &pool; }
+        ~Use() { current() = previous_; }
+        Use(const Use&) = delete;
+        Use& operator=(const Use&) = delete;
+
+    private:
+        EntryPool* previous_;
+    };
+
     static void* allocate(std::size_t size)
     {
-        Local& l = local();
-        ++l.live;
-        return l.pool.allocate(size);
+        EntryPool& p = inUse();
+        ++p.live_;
+        return p.pool_.allocate(size);
     }
-    static void deallocate(void* p, std::size_t size)
+    static void deallocate(void* ptr, std::size_t size)
     {
-        Local& l = local();
-        l.pool.deallocate(p, size);
-        if (--l.live == 0)
-            l.pool.release();
+        EntryPool& p = inUse();
+        p.pool_.deallocate(ptr, size);
+        if (--p.live_ == 0)
+            p.pool_.release();
     }
 
 private:
-    struct Local {
-        std::pmr::unsynchronized_pool_resource pool;
-        std::size_t live = 0;
-    };
-    static Local& local()
+    static EntryPool*& current()
     {
-        thread_local Local l;
-        return l;
+        thread_local EntryPool* pool = nullptr;
+        return pool;
     }
+    static EntryPool& inUse()
+    {
+        thread_local EntryPool own;
+        EntryPool* p = current();
+        return p ? *p : own;
+    }
+
+    std::pmr::unsynchronized_pool_resource pool_;
+    std::size_t live_ = 0;
 };
 
 // What float coordinates resolve, as a share of their magnitude (a few units in the last
@@ -120,7 +146,18 @@ struct CollapseContext : public vcg::BaseParameterClass {
     SimplifyParams params;
     FeatureBits bits;
     bool ownsBits = true;         // bits taken by this session (not shared with others)
-    VertexQuadrics<VertexType> quadrics;
+    // The per-vertex and per-face arrays of the mesh, one set for every session on it: a
+    // copy of a context is a second session on the same mesh (collapse_halves.h), and the
+    // two write the entries of different vertices and faces only.
+    struct MeshArrays {
+        VertexQuadrics<VertexType> quadrics;
+        std::vector<int> ringChangedAt;         // per vertex: `mark` when a face around it last changed
+        std::vector<vcg::Point3f> inputNormal;  // per face index: unit normal in the input
+    };
+    std::shared_ptr<MeshArrays> arrays = std::make_shared<MeshArrays>();
+    VertexQuadrics<VertexType>& quadrics = arrays->quadrics;
+    std::vector<int>& ringChangedAt = arrays->ringChangedAt;
+    std::vector<vcg::Point3f>& inputNormal = arrays->inputNormal;
     SimplifyStats* stats = nullptr;
     double diagonal = 1.0;
     double flatError2 = 0.0;      // (flatTolerance * diagonal)²: collapses within it are free
@@ -134,10 +171,8 @@ struct CollapseContext : public vcg::BaseParameterClass {
     std::vector<RingFace> ring;   // scratch of the edge being evaluated
     int mark = 0;                 // this session's clock: ticks at every collapse (vcglib's GlobalMark)
     bool mayRemoveLargestComponent = false;  // the mesh is a piece of a model whose largest component is elsewhere
-    std::vector<int> ringChangedAt;  // per vertex: `mark` when a face around it last changed
     int& ringChanged(const VertexType* v) { return ringChangedAt[v - vertexBase]; }
     const VertexType* vertexBase = nullptr;
-    std::vector<vcg::Point3f> inputNormal;  // per face index: unit normal in the input
     // Collapses about to run are checked against the input surface (input_surface.h): one
     // that turns a face away from it is ranked at facingPenalty times its error, as a feature
     // break is (0: refused). Null: no check. It gives way in the far field, once the mesh is
@@ -147,6 +182,10 @@ struct CollapseContext : public vcg::BaseParameterClass {
     int facingFloor = 0;
     bool facingGaveWay = false;      // a collapse ran unchecked below facingFloor
     const int* faceCount = nullptr;  // the mesh's live faces (m.fn)
+    // Where executed collapses count what they delete: the mesh's own counts (m.fn, m.vn),
+    // or a session's own when two sessions collapse the halves of one mesh at once.
+    int* faceCounter = nullptr;
+    int* vertexCounter = nullptr;
     const typename MeshType::FaceType* faceBase = nullptr;
     // Deleted elements reserved for tunnel cuts (tunnel_cut.h); empty: no cuts.
     std::vector<VertexType*> spareVertices;
@@ -323,7 +362,7 @@ public:
         return true;
     }
 
-    void Execute(MeshType& m, vcg::BaseParameterClass* pp) override
+    void Execute(MeshType&, vcg::BaseParameterClass* pp) override
     {
         Context& ctx = *static_cast<Context*>(pp);
         VertexType* v0 = this->pos.V(0);
@@ -343,7 +382,9 @@ public:
         if (v0->IsUserBit(ctx.bits.boundary))
             v1->SetUserBit(ctx.bits.boundary);
         ctx.quadrics.merge(v0, v1);
-        vcg::tri::EdgeCollapser<MeshType, VertexPair>::Do(m, this->pos, target_);
+        const CollapseCount deleted = collapseEdge(v0, v1, target_);
+        *ctx.faceCounter -= deleted.faces;
+        *ctx.vertexCounter -= deleted.vertices;
         for (VertexType* x : featureApex)
             markEdge(ctx, v1, x);
         ctx.largestError = std::max(ctx.largestError, double(error_));
@@ -409,19 +450,25 @@ public:
         for (HeapElem& e : heap)
             delete e.locModPtr;
         heap.clear();
-        for (VertexType& v : m.vert) {
-            if (v.IsD() || !v.IsRW())
-                continue;
-            for (VFIterator x(&v); !x.End(); ++x) {
-                x.V1()->ClearV();
-                x.V2()->ClearV();
-            }
-            for (VFIterator x(&v); !x.End(); ++x) {
-                for (VertexType* w : {x.V1(), x.V2()}) {
-                    if (&v < w && w->IsRW() && !w->IsV()) {
-                        w->SetV();
-                        heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(&v, w), static_cast<Context*>(pp)->mark, pp)));
-                    }
+        for (VertexType& v : m.vert)
+            appendEdgesOf(&v, heap, pp);
+    }
+
+    // The edges from `v` to writable vertices after it in memory (so each edge once, when
+    // this is done for every vertex), appended to `heap` unordered.
+    static void appendEdgesOf(VertexType* v, HeapType& heap, vcg::BaseParameterClass* pp)
+    {
+        if (v->IsD() || !v->IsRW())
+            return;
+        for (VFIterator x(v); !x.End(); ++x) {
+            x.V1()->ClearV();
+            x.V2()->ClearV();
+        }
+        for (VFIterator x(v); !x.End(); ++x) {
+            for (VertexType* w : {x.V1(), x.V2()}) {
+                if (v < w && w->IsRW() && !w->IsV()) {
+                    w->SetV();
+                    heap.push_back(HeapElem(new CadEdgeCollapse(VertexPair(v, w), static_cast<Context*>(pp)->mark, pp)));
                 }
             }
         }

@@ -109,7 +109,7 @@ public:
     {
         for (Bucket& b : buckets_) {
             const SimplifyStats& s = b.stats;
-            for (int SimplifyStats::*count : kCounts)
+            for (int SimplifyStats::*count : kSessionCounts)
                 total.*count += s.*count - b.reported.*count;
             total.largestRemovedComponent = std::max(total.largestRemovedComponent, s.largestRemovedComponent);
             total.widestTunnelCap = std::max(total.widestTunnelCap, s.widestTunnelCap);
@@ -146,14 +146,6 @@ public:
     }
 
 private:
-    // The statistics a session counts up, added over the buckets.
-    static constexpr int SimplifyStats::*kCounts[] = {
-        &SimplifyStats::featureEdges,        &SimplifyStats::boundaryEdges,     &SimplifyStats::nonManifoldEdges,
-        &SimplifyStats::degenerateFaces,     &SimplifyStats::collapses,         &SimplifyStats::rejectedFlip,
-        &SimplifyStats::rejectedCompactness, &SimplifyStats::rejectedFeature,   &SimplifyStats::rejectedError,
-        &SimplifyStats::rejectedTopology,    &SimplifyStats::featureBreaks,     &SimplifyStats::removedComponents,
-        &SimplifyStats::closedTunnels};
-
     struct Bucket {
         explicit Bucket(MeshType& m) : mesh(m) {}
         MeshType& mesh;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "cad_edge_collapse.h"
+#include "collapse_halves.h"
 #include "collapse_heap.h"
 #include "component_removal.h"
 #include "layer_metadata.h"
@@ -253,6 +254,8 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
         ctx.faceCount = &m.fn;
     }
     ctx.clearRingChanges(m);
+    ctx.faceCounter = &m.fn;
+    ctx.vertexCounter = &m.vn;
     return true;
 }
 
@@ -356,7 +359,9 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
     fillHeap();
     if (stats.targetFaces > 0)
         session.SetTargetSimplices(stats.targetFaces);
-    const int toRemove = std::max(1, m.fn - stats.targetFaces);
+    // Progress counts from the faces the simplification started with (a first phase,
+    // collapse_halves.h, may have made part of the removal).
+    const int toRemove = std::max(1, std::max(m.fn, stats.facesBefore) - stats.targetFaces);
     // Return now and then to report progress: after a number of collapses, not a time
     // budget (vcglib reads the process CPU clock, a system call, on every heap pop).
     session.SetTargetOperations(std::max(1000, toRemove / 100));
@@ -391,9 +396,11 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
                                 " faces (the far field: under 5 % of the input)");
 }
 
-// Simplifies `m` in place. `progress` may be null.
+// Simplifies `m` in place. `progress` may be null. `together` runs the two halves of a large
+// mesh (collapse_halves.h) at once, or one after the other (the result is the same).
 template <class MeshType>
-SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackPos* progress = nullptr)
+SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackPos* progress = nullptr,
+                       const RunTogether& together = runInSequence)
 {
     using VertexType = typename MeshType::VertexType;
     const auto start = std::chrono::steady_clock::now();
@@ -425,6 +432,7 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
         if (params.selectedOnly)
             frozen = detail::freezeUnselected(m);
 
+        collapseHalvesFirst(m, ctx, stats, together, progress);
         collapseToTarget(m, ctx, stats, progress);
         for (VertexType* v : frozen)
             v->SetW();

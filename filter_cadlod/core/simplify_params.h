@@ -66,6 +66,10 @@ struct SimplifyParams {
     // remove the smallest connected components whole (each logged). Off: stop early.
     bool relaxToReachTarget = true;
     bool selectedOnly = false;       // only collapse vertices whose faces are all selected
+    // A mesh with at least this many faces is first collapsed as two halves side by side
+    // (collapse_halves.h), on two cores when the caller gives a RunTogether that runs tasks
+    // at once; 0: never. Below it a session takes about a second or less.
+    int halvesMinFaces = 200000;
 };
 
 struct SimplifyStats {
@@ -96,6 +100,8 @@ struct SimplifyStats {
     int removedComponents = 0;     // connected components removed whole
     double largestRemovedComponent = 0.0;  // bbox diagonal, model units
     int closedTunnels = 0;         // loops of three edges cut and capped (tunnel_cut.h)
+    int halvesCollapses = 0;       // collapses made by two half sessions side by side (collapse_halves.h)
+    int halvesBandVertices = 0;    // the band between the halves, frozen while they ran
     double widestTunnelCap = 0.0;  // the largest cap inradius, model units
     double errorBound = 0.0;       // the maximum collapse error in force, model units (0: none)
     std::vector<std::string> relaxed;  // one line per relaxation step, for the log
@@ -103,6 +109,15 @@ struct SimplifyStats {
 
     double largestErrorFraction() const { return diagonal > 0 ? largestError / diagonal : 0.0; }
 };
+
+// The statistics a collapse session counts up: what sessions on pieces of one model add
+// together (the others are sizes, largest values, lists).
+inline constexpr int SimplifyStats::*kSessionCounts[] = {
+    &SimplifyStats::featureEdges,        &SimplifyStats::boundaryEdges,   &SimplifyStats::nonManifoldEdges,
+    &SimplifyStats::degenerateFaces,     &SimplifyStats::collapses,       &SimplifyStats::rejectedFlip,
+    &SimplifyStats::rejectedCompactness, &SimplifyStats::rejectedFeature, &SimplifyStats::rejectedError,
+    &SimplifyStats::rejectedTopology,    &SimplifyStats::featureBreaks,   &SimplifyStats::removedComponents,
+    &SimplifyStats::closedTunnels};
 
 // The face count the stop criteria translate to for an input of `faces` faces
 // (0 when only maxError is set).
