@@ -1,5 +1,7 @@
 // The subcommands: each adds itself to the application and runs when chosen.
 #pragma once
+#include "core/run_together.h"
+
 #include <CLI/CLI.hpp>
 
 namespace cadlod::cli {
@@ -11,5 +13,8 @@ void addInfoCommand(CLI::App& app);
 
 // Limits oneTBB to `threads` workers (0: all cores) for the rest of the process.
 void limitThreads(int threads);
+
+// Runs two tasks on oneTBB's workers (one after the other when it has one).
+void runOnWorkers(const Task& a, const Task& b);
 
 }  // namespace cadlod::cli

@@ -13,7 +13,6 @@
 #include "core/lod_chain.h"
 #include "flt_writer.h"
 
-#include <tbb/parallel_invoke.h>
 
 #include <chrono>
 #include <deque>
@@ -74,7 +73,7 @@ LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& s
         o.cullPixels = a.cullPixels;
         o.hausdorffSamples = a.samples;
         applyProtection(a.protection, o.simplify);
-        o.runTogether = [](const Task& x, const Task& y) { tbb::parallel_invoke(x, y); };
+        o.runTogether = runOnWorkers;
         CoreMesh scratch;
         return buildLodChain<CoreMesh>(original, scratch, o, newLevel, progress::callback);
     }
@@ -82,7 +81,7 @@ LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& s
     o.levels = a.lod;
     o.view = viewOf(a);
     o.fromOriginal = a.fromOriginal;
-    o.runTogether = [](const Task& x, const Task& y) { tbb::parallel_invoke(x, y); };
+    o.runTogether = runOnWorkers;
     o.hausdorffSamples = a.samples;
     applyProtection(a.protection, o.simplify);
     return buildLodSet<CoreMesh>(original, o, newLevel, progress::callback);

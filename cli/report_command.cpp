@@ -5,7 +5,6 @@
 #include "mesh_files.h"
 #include "report_json.h"
 
-#include <tbb/parallel_invoke.h>
 
 #include <cstdio>
 #include <iostream>
@@ -44,7 +43,7 @@ void runReport(const ReportArgs& a)
     loadMesh(a.original, original, importing);
     loadMesh(a.simplified, simplified, importing);
     const SimplificationReport r = compareWithOriginal(original, simplified, a.samples, nullptr,
-                                                         [](const Task& x, const Task& y) { tbb::parallel_invoke(x, y); });
+                                                         runOnWorkers);
     if (a.json)
         std::cout << comparisonJson(r).dump(2) << "\n";
     else

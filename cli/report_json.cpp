@@ -35,6 +35,7 @@ nlohmann::json simplifyStatsJson(const SimplifyStats& s)
     return {{"facesBefore", s.facesBefore},
             {"facesAfter", s.facesAfter},
             {"collapses", s.collapses},
+            {"halvesCollapses", s.halvesCollapses},
             {"largestCollapseError", s.largestError},
             {"errorBound", s.errorBound},
             {"stoppedBy", s.stoppedBy},

@@ -56,7 +56,7 @@ void runSimplify(const SimplifyArgs& a)
             std::fprintf(stderr, "cadlod: %s: %d faces, written unsimplified (--reduction 0)\n", a.output.c_str(), m.fn);
         return;
     }
-    const SimplifyStats stats = simplify(m, paramsOf(a), progress::callback);
+    const SimplifyStats stats = simplify(m, paramsOf(a), progress::callback, runOnWorkers);
     if (!stats.ok)
         throw InputError(a.input + ": " + stats.message);
     saveMesh(a.output, m, saving);
@@ -68,6 +68,10 @@ void runSimplify(const SimplifyArgs& a)
         std::fprintf(stderr, "cadlod: %s: %d -> %d faces (stopped by %s), largest collapse error %.6g (%.4f%% diag)\n",
                      a.output.c_str(), stats.facesBefore, stats.facesAfter, stats.stoppedBy.c_str(),
                      stats.largestError, 100.0 * stats.largestErrorFraction());
+    if (!a.common.quiet && stats.halvesCollapses > 0)
+        std::fprintf(stderr, "cadlod: %d of %d collapses made on two halves side by side (a band of %d vertices "
+                             "between them left to the end)\n",
+                     stats.halvesCollapses, stats.collapses, stats.halvesBandVertices);
     if (!a.common.quiet)
         for (const std::string& line : stats.relaxed)  // what gave way to reach the target
             std::fprintf(stderr, "cadlod: %s\n", line.c_str());

@@ -1,6 +1,7 @@
 #include "commands.h"
 
 #include <tbb/global_control.h>
+#include <tbb/parallel_invoke.h>
 
 #include <memory>
 
@@ -12,6 +13,11 @@ void limitThreads(int threads)
     if (threads > 0)
         control = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                         std::size_t(threads));
+}
+
+void runOnWorkers(const Task& a, const Task& b)
+{
+    tbb::parallel_invoke(a, b);
 }
 
 }  // namespace cadlod::cli

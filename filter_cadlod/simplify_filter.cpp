@@ -61,7 +61,8 @@ bool cadSimplify(MeshFilterInterface& plugin, MeshModel& m, const RichParameterL
     const SimplifyParams params = readParams(par);
     m.updateDataMask(MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK);
     const CompactnessStats before = meshCompactness(m.cm);
-    const SimplifyStats s = simplify(m.cm, params, cb);
+    // A mesh of a few hundred thousand faces or more collapses on two cores (collapse_halves.h).
+    const SimplifyStats s = simplify(m.cm, params, cb, runOnTwoThreads);
     if (!s.ok) {
         error = QString("CAD Quadric Edge Collapse on %1: %2").arg(m.label(), QString::fromStdString(s.message));
         plugin.Log("%s", qUtf8Printable(error));
@@ -91,6 +92,10 @@ bool cadSimplify(MeshFilterInterface& plugin, MeshModel& m, const RichParameterL
     plugin.Log("CAD Quadric Edge Collapse on %s: %d -> %d faces (target %d) in %.3f s, %d collapses; stopped by: %s",
                qUtf8Printable(m.label()), s.facesBefore, m.cm.fn, s.targetFaces, s.seconds, s.collapses,
                s.stoppedBy.c_str());
+    if (s.halvesCollapses > 0)
+        plugin.Log("CAD Quadric Edge Collapse on %s: %d of the collapses made on two halves side by side (a band of "
+                   "%d vertices between them left to the end)",
+                   qUtf8Printable(m.label()), s.halvesCollapses, s.halvesBandVertices);
     plugin.Log("Compactness mean %.4f -> %.4f, p5 %.4f -> %.4f, below 0.1: %.2f%% -> %.2f%%", before.mean,
                after.mean, before.p5, after.p5, 100 * before.shareBelow01, 100 * after.shareBelow01);
     plugin.Log("Largest collapse error %.6g (%.5f%% of the bbox diagonal %.6g)", s.largestError,

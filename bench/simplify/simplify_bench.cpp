@@ -117,10 +117,12 @@ void simplifyWith(const std::string& tool, TestMesh& m, int target, double& seco
         return;
     }
     const auto t = std::chrono::steady_clock::now();
-    if (tool == "cadlod") {
+    if (tool == "cadlod" || tool == "cadlod-2t" || tool == "cadlod-whole") {
         cadlod::SimplifyParams p;
         p.targetFaces = target;
-        cadlod::simplify(m, p);
+        if (tool == "cadlod-whole")
+            p.halvesMinFaces = 0;
+        cadlod::simplify(m, p, nullptr, tool == "cadlod-2t" ? cadlod::RunTogether(cadlod::runOnTwoThreads) : cadlod::RunTogether(cadlod::runInSequence));
     } else if (tool == "vcglib") {
         cadlod::test::stockSimplify(m, target, cadlod::test::stockDefaults<TestMesh>());
     } else if (tool == "meshopt") {

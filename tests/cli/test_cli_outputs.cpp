@@ -110,12 +110,9 @@ TEST(CliOutputs, SimplifyWritesPlyObjStlAndReportMeasuresIt)
     EXPECT_TRUE(r.contains("compactnessAfter"));
 }
 
-// The simplifier tests' drilled plate (40 x 40 x 2, a hole of radius 4, 32 points per ring:
-// a closed surface of genus 1) as an ASCII PLY.
-void writeDrilledPlatePly(const std::string& path)
+// What a CadBuilder made, as an ASCII PLY.
+void writePly(const CadBuilder& b, const std::string& path)
 {
-    CadBuilder b;
-    drilledPlate(b, 40, 2, 4, 32);
     std::ofstream out(path);
     out << "ply\nformat ascii 1.0\nelement vertex " << b.points.size() << "\nproperty float x\nproperty float y\n"
         << "property float z\nelement face " << b.triangles.size()
@@ -124,6 +121,15 @@ void writeDrilledPlatePly(const std::string& path)
         out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
     for (const auto& t : b.triangles)
         out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+}
+
+// The simplifier tests' drilled plate (40 x 40 x 2, a hole of radius 4, 32 points per ring:
+// a closed surface of genus 1) as an ASCII PLY.
+void writeDrilledPlatePly(const std::string& path)
+{
+    CadBuilder b;
+    drilledPlate(b, 40, 2, 4, 32);
+    writePly(b, path);
 }
 
 int trianglesOf(const std::string& path)
@@ -167,6 +173,29 @@ TEST(CliOutputs, SimplifyClosesATunnelUnlessToldToKeepIt)
     ASSERT_EQ(kept.exitCode, 0) << kept.stderrText;
     EXPECT_GT(trianglesOf(dir + "/kept.ply"), 12);
     EXPECT_EQ(kept.stderrText.find("tunnel"), std::string::npos) << kept.stderrText;
+}
+
+// A part of a quarter of a million triangles collapses as two halves side by side first
+// (core/collapse_halves.h): on two threads it writes what one thread writes, and says so.
+TEST(CliOutputs, SimplifyOfALargePartOnTwoThreadsWritesWhatOneWrites)
+{
+    const std::string dir = freshDirectory("halves");
+    CadBuilder b;
+    const RevolveSpec spec = shaftSpecForTriangles(250000);
+    revolve(b, shaftProfile(2.0), spec);
+    writePly(b, dir + "/shaft.ply");
+    std::string bytes[2];
+    for (const int threads : {1, 2}) {
+        const std::string out = dir + "/out" + std::to_string(threads) + ".ply";
+        const CliRun run = runCadlod(
+            {"simplify", dir + "/shaft.ply", "-o", out, "--reduction", "90", "--threads", std::to_string(threads)});
+        ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+        EXPECT_NE(run.stderrText.find("collapses made on two halves side by side"), std::string::npos)
+            << run.stderrText;
+        bytes[threads - 1] = readFile(out);
+    }
+    ASSERT_GT(bytes[0].size(), 100000u);
+    EXPECT_TRUE(bytes[0] == bytes[1]);
 }
 
 TEST(CliOutputs, InfoListsTheLevelsOfAnOpenFlightFile)
