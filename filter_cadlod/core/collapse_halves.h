@@ -5,9 +5,9 @@
 // though. So the mesh is cut in two halves kept apart by a band that neither may change,
 // and each half gets a session of its own; the two run at the same time.
 //
-// The cut: a plane across the longest side of the box (cuttingPlane) puts every vertex in
-// a lower or an upper half. Both ends of every edge that crosses it form the band, whose
-// vertices are made read-only as vcglib freezes the outside of a selection. A collapse
+// The cut: planes across the longest side of the box cut it into slabs, dealt to the two
+// halves in turn (slabPlanes). Both ends of every edge between the halves form the band,
+// whose vertices are made read-only as vcglib freezes the outside of a selection. A collapse
 // reads and writes the faces around its two ends and the vertices of those faces; with the
 // band two vertices wide, no face or vertex one half's session touches is the other's
 // (tests/simplify: the same tests under ThreadSanitizer). Each half's session is a copy of
@@ -20,10 +20,12 @@
 // half the collapses come in the order one session gives them. The rounds stop once the
 // halves' own faces have lost kHalvesShare of the reduction the face target asks for (the
 // band's faces are left to the whole-mesh session), but never more than one session would
-// have taken from them had it taken the whole band first; in each round a half removes at
-// most its share of what is left to that point, which binds in the last. A mesh whose band
-// holds so many of its faces that the halves could not make half the removal is not cut. With only a maximum error, each half runs until no
-// collapse within the error is left in it.
+// have taken from them had it taken the whole band first. In a round where both halves
+// have collapses up to the threshold, each removes at most its share of what is left to
+// that point, which binds in the last rounds; the threshold rises only once neither has
+// any. A mesh whose band holds so many of its faces that the halves could not make half
+// the removal is not cut. With only a maximum error, each half runs until no collapse
+// within the error is left in it.
 //
 // Then the band is writable again, and the session over the whole mesh goes on from there
 // (collapseToTarget, every edge back in its heap): it does the band's collapses, the rest of
@@ -70,31 +72,49 @@ struct HalvesCut {
     int bandFaces = 0;  // faces with two or more vertices in the band: no half's collapse deletes them
 };
 
-// Where to cut: a plane across the box's longest side, at one of the quantiles 40..60 % of
-// the face centroids along it, the one that the edges crossing it add up to the least length at.
-// Every edge that crosses goes into the band with both its ends, and freezes every face
-// around them: a plane across a cylinder's long strips would freeze the whole cylinder,
-// one across a chamfer two narrow rings.
+// The mesh is cut across the box's longest side into kHalvesSlabs slabs, dealt to the two
+// halves in turn: each half gets parts of the mesh from along its whole length, so the two
+// have about the same work at every cost (one slab each could give one half the fine end of
+// a part and the other its plain one, and the cheap collapses of the first would wait for
+// nothing while the second ran alone).
+inline constexpr int kHalvesSlabs = 4;
+
+// The planes between the slabs: near each of the face-centroid quantiles 1/4, 2/4 and 3/4
+// (within 5 points), the one that the edges crossing it add up to the least length at. Every
+// edge that crosses a plane goes into the band with both its ends, and freezes every face
+// around them: a plane across a cylinder's long strips would freeze the whole cylinder, one
+// across a chamfer two narrow rings.
+struct SlabPlanes {
+    int axis = 0;
+    std::vector<double> at;  // ascending
+    // 0 or 1: the half of a point at `coordinate` along the axis (on a plane: the slab above)
+    int halfOf(double coordinate) const
+    {
+        return int(std::upper_bound(at.begin(), at.end(), coordinate) - at.begin()) % 2;
+    }
+};
+
 template <class MeshType>
-std::pair<int, double> cuttingPlane(const MeshType& m)
+SlabPlanes slabPlanes(const MeshType& m)
 {
-    const int axis = liveVertexBox(m).MaxDim();
+    SlabPlanes planes;
+    planes.axis = liveVertexBox(m).MaxDim();
+    const int axis = planes.axis;
     std::vector<double> along;
     along.reserve(std::size_t(m.fn));
     for (const auto& f : m.face)
         if (!f.IsD())
             along.push_back((double(f.cP(0)[axis]) + f.cP(1)[axis] + f.cP(2)[axis]) / 3.0);
-    constexpr int kCandidates = 21;
-    std::vector<double> plane(kCandidates);
-    for (int i = 0; i < kCandidates; ++i) {
-        const auto at = along.begin() + std::ptrdiff_t((0.4 + 0.2 * i / (kCandidates - 1)) * (along.size() - 1));
-        std::nth_element(along.begin(), at, along.end());
-        plane[std::size_t(i)] = *at;
-    }
-    std::sort(plane.begin(), plane.end());
-    // crossing[i]: the length of the edges that plane i cuts (an edge [lo, hi] is cut by the
-    // planes lo < c <= hi, a vertex on the plane going to the upper half), as differences.
-    std::vector<double> crossing(kCandidates + 1, 0.0);
+    if (along.empty())
+        return planes;
+    std::sort(along.begin(), along.end());
+    // Candidate planes at every percentile, and the length of the edges each one cuts (an
+    // edge [lo, hi] is cut by the planes lo < c <= hi), summed from differences.
+    constexpr int kPercentiles = 101;
+    std::vector<double> candidate(kPercentiles);
+    for (int i = 0; i < kPercentiles; ++i)
+        candidate[std::size_t(i)] = along[std::size_t(i * (along.size() - 1) / (kPercentiles - 1))];
+    std::vector<double> crossing(kPercentiles + 1, 0.0);
     for (const auto& f : m.face) {
         if (f.IsD())
             continue;
@@ -102,38 +122,37 @@ std::pair<int, double> cuttingPlane(const MeshType& m)
             const auto& a = f.cP(j);
             const auto& b = f.cP((j + 1) % 3);
             const double lo = std::min(a[axis], b[axis]), hi = std::max(a[axis], b[axis]);
-            const auto first = std::upper_bound(plane.begin(), plane.end(), lo) - plane.begin();
-            const auto last = std::upper_bound(plane.begin(), plane.end(), hi) - plane.begin();
+            const auto first = std::upper_bound(candidate.begin(), candidate.end(), lo) - candidate.begin();
+            const auto last = std::upper_bound(candidate.begin(), candidate.end(), hi) - candidate.begin();
             const double length = vcg::Distance(a, b);
             crossing[std::size_t(first)] += length;
             crossing[std::size_t(last)] -= length;
         }
     }
-    int best = kCandidates / 2;
-    double bestLength = std::numeric_limits<double>::max();
-    double sum = 0.0;
-    for (int i = 0; i < kCandidates; ++i) {
-        sum += crossing[std::size_t(i)];
-        // the median wins ties, then the plane nearest it
-        const bool better = sum < bestLength || (sum == bestLength && std::abs(i - kCandidates / 2) < std::abs(best - kCandidates / 2));
-        if (better) {
-            best = i;
-            bestLength = sum;
-        }
+    for (int i = 1; i < kPercentiles; ++i)
+        crossing[std::size_t(i)] += crossing[std::size_t(i - 1)];
+    for (int k = 1; k < kHalvesSlabs; ++k) {
+        const int middle = k * (kPercentiles - 1) / kHalvesSlabs;
+        int best = middle;  // the quantile itself wins ties, then the percentile nearest it
+        for (int d = 1; d <= 5; ++d)
+            for (const int i : {middle - d, middle + d})
+                if (crossing[std::size_t(i)] < crossing[std::size_t(best)])
+                    best = i;
+        if (planes.at.empty() || candidate[std::size_t(best)] > planes.at.back())
+            planes.at.push_back(candidate[std::size_t(best)]);
     }
-    return {axis, plane[std::size_t(best)]};
+    return planes;
 }
 
 // Cuts `m` in halves and freezes the band between them (see the file's comment): a vertex
-// is in the lower half when it lies below the cutting plane; the band is both ends of every
-// edge between the halves, so a frozen vertex of the lower half is never next to a writable
-// one of the upper half, and the other way round.
+// belongs to the half of its slab; the band is both ends of every edge between the halves,
+// so a frozen vertex of one half is never next to a writable one of the other.
 template <class MeshType>
 HalvesCut<MeshType> cutInHalves(MeshType& m)
 {
-    const auto [axis, plane] = cuttingPlane(m);
+    const SlabPlanes planes = slabPlanes(m);
     auto index = [&](const typename MeshType::VertexType* v) { return std::size_t(v - &m.vert[0]); };
-    auto halfOf = [&](const typename MeshType::VertexType* v) { return v->cP()[axis] < plane ? 0 : 1; };
+    auto halfOf = [&](const typename MeshType::VertexType* v) { return planes.halfOf(v->cP()[planes.axis]); };
     std::vector<bool> inBand(m.vert.size(), false);
     std::vector<bool> used(m.vert.size(), false);
     for (const auto& f : m.face) {
@@ -205,6 +224,7 @@ struct HalfSession {
     }
 
     float lowest() const { return heap.empty() ? std::numeric_limits<float>::max() : heap.front().pri; }
+    bool hasUpTo(float threshold) const { return !heap.empty() && heap.front().pri <= threshold; }
 
     // Collapses until the heap's first entry costs more than `threshold`, or `cap` faces
     // are gone in this round.
@@ -275,22 +295,30 @@ void collapseHalvesFirst(MeshType& m, CollapseContext<MeshType>& whole, Simplify
 
     auto live = [&] { return m.fn - (cut.faces[0] - halves[0]->liveFaces) - (cut.faces[1] - halves[1]->liveFaces); };
     float threshold = 0.0f;
-    for (bool capped = false; !capped;) {
+    for (;;) {
         const int faces = live();
         if (target > 0 && faces <= goal)
             break;
-        const float lowest = std::min(halves[0]->lowest(), halves[1]->lowest());
-        if (!(lowest < std::numeric_limits<float>::max()))
-            break;  // nothing left but refused or locked edges
-        threshold = target > 0 ? 2.0f * std::max(threshold, lowest) : std::numeric_limits<float>::max();
-        std::array<int, 2> cap;
+        std::array<bool, 2> below;  // the half has collapses up to the threshold left
         for (std::size_t h = 0; h < 2; ++h)
-            cap[h] = target > 0 ? int(std::ceil(double(faces - goal) * halves[h]->liveFaces / std::max(faces, 1)))
-                                : std::numeric_limits<int>::max();
-        std::array<int, 2> before{halves[0]->liveFaces, halves[1]->liveFaces};
+            below[h] = halves[h]->hasUpTo(threshold);
+        if (!below[0] && !below[1]) {
+            const float lowest = std::min(halves[0]->lowest(), halves[1]->lowest());
+            if (!(lowest < std::numeric_limits<float>::max()))
+                break;  // nothing left but refused or locked edges
+            threshold = target > 0 ? 2.0f * std::max(threshold, lowest) : std::numeric_limits<float>::max();
+            for (std::size_t h = 0; h < 2; ++h)
+                below[h] = halves[h]->hasUpTo(threshold);
+        }
+        // What is left to the goal, shared by the halves' faces when both have collapses up
+        // to the threshold, all of it for one when the other has none.
+        std::array<int, 2> cap{0, 0};
+        for (std::size_t h = 0; h < 2; ++h)
+            cap[h] = target == 0     ? std::numeric_limits<int>::max()
+                     : !below[h]     ? 0
+                     : !below[1 - h] ? faces - goal
+                                     : int(std::ceil(double(faces - goal) * halves[h]->liveFaces / std::max(faces, 1)));
         together([&] { halves[0]->run(m, threshold, cap[0]); }, [&] { halves[1]->run(m, threshold, cap[1]); });
-        for (std::size_t h = 0; h < 2; ++h)
-            capped |= before[h] - halves[h]->liveFaces >= cap[h];
         if (progress && target > 0)
             progress(std::clamp(100 * (facesBefore - live()) / std::max(1, facesBefore - target), 0, 99),
                      "CAD edge collapse (two halves side by side)");
