@@ -81,9 +81,13 @@ public:
             b.stats.targetFaces = 0;
             b.stats.errorBound = maxErrorAbs;
         }
-        forEachBucket(0, buckets_.size(), together, [](Bucket& b) {
-            if (b.ready)
-                collapseToTarget(b.mesh, b.ctx, b.stats, nullptr);
+        // A bucket of a few hundred thousand faces starts as two halves side by side
+        // (collapse_halves.h): a one-part model's first level is most of a chain's work.
+        forEachBucket(0, buckets_.size(), together, [&](Bucket& b) {
+            if (!b.ready)
+                return;
+            collapseHalvesFirst(b.mesh, b.ctx, b.stats, together, nullptr);
+            collapseToTarget(b.mesh, b.ctx, b.stats, nullptr);
         });
     }
 
@@ -112,6 +116,7 @@ public:
             for (int SimplifyStats::*count : kSessionCounts)
                 total.*count += s.*count - b.reported.*count;
             total.largestRemovedComponent = std::max(total.largestRemovedComponent, s.largestRemovedComponent);
+            total.halvesBandVertices = std::max(total.halvesBandVertices, s.halvesBandVertices);
             total.widestTunnelCap = std::max(total.widestTunnelCap, s.widestTunnelCap);
             total.relaxed.insert(total.relaxed.end(), s.relaxed.begin(), s.relaxed.end());
             b.stats.relaxed.clear();

@@ -117,7 +117,7 @@ inline constexpr int SimplifyStats::*kSessionCounts[] = {
     &SimplifyStats::degenerateFaces,     &SimplifyStats::collapses,       &SimplifyStats::rejectedFlip,
     &SimplifyStats::rejectedCompactness, &SimplifyStats::rejectedFeature, &SimplifyStats::rejectedError,
     &SimplifyStats::rejectedTopology,    &SimplifyStats::featureBreaks,   &SimplifyStats::removedComponents,
-    &SimplifyStats::closedTunnels};
+    &SimplifyStats::closedTunnels,       &SimplifyStats::halvesCollapses};
 
 // The face count the stop criteria translate to for an input of `faces` faces
 // (0 when only maxError is set).

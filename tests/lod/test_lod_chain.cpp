@@ -181,3 +181,37 @@ TEST(LodChain, BadCameraIsAClearError)
     EXPECT_NE(c.result.error.find("field of view"), std::string::npos);
     EXPECT_TRUE(c.meshes.empty());
 }
+
+// A piece of at least halvesMinFaces faces starts its first level as two halves side by
+// side (collapse_halves.h): the chain is the same on one thread and two, and every level
+// is still drawn only within its pixel error.
+TEST(LodChain, LargePiecesStartAsTwoHalvesWithTheSameChainOnTwoThreads)
+{
+    LodChainOptions sequential;
+    sequential.simplify.halvesMinFaces = 1000;
+    LodChainOptions threaded = sequential;
+    threaded.runTogether = runOnTwoThreads;
+    Chain one(assemblyBuilder(), sequential), two(assemblyBuilder(), threaded);
+    ASSERT_TRUE(one.result.ok()) << one.result.error;
+    ASSERT_TRUE(two.result.ok()) << two.result.error;
+    ASSERT_FALSE(one.result.steps.empty());
+    EXPECT_GT(one.result.steps[0].halvesCollapses, 0);  // level 1
+    EXPECT_GT(one.result.steps[0].halvesBandVertices, 0);
+    ASSERT_EQ(one.result.levels.size(), two.result.levels.size());
+    for (std::size_t i = 0; i < one.result.levels.size(); ++i) {
+        EXPECT_EQ(one.result.levels[i].faces, two.result.levels[i].faces) << "level " << i;
+        EXPECT_EQ(one.result.levels[i].switchOut, two.result.levels[i].switchOut) << "level " << i;
+        TestMesh &ma = one.level(i), &mb = two.level(i);
+        ASSERT_EQ(ma.vert.size(), mb.vert.size());
+        for (std::size_t v = 0; v < ma.vert.size(); ++v)
+            ASSERT_EQ(ma.vert[v].cP(), mb.vert[v].cP()) << "level " << i << " vertex " << v;
+        if (i == 0)
+            continue;
+        HausdorffStats forward = oneSidedHausdorff(one.input, ma, std::size_t(one.input.fn) * 4, 11);
+        HausdorffStats backward = oneSidedHausdorff(ma, one.input, std::size_t(one.input.fn) * 4, 12);
+        EXPECT_LE(projectedPixels(std::max(forward.max, backward.max), one.result.levels[i].switchOut,
+                                  sequential.view),
+                  sequential.view.pixelThreshold * 1.05)
+            << "level " << i << " (" << ma.fn << " faces)";
+    }
+}
