@@ -86,7 +86,12 @@ public:
         forEachBucket(0, buckets_.size(), together, [&](Bucket& b) {
             if (!b.ready)
                 return;
+            const int before = b.stats.halvesCollapses;
             collapseHalvesFirst(b.mesh, b.ctx, b.stats, together, nullptr);
+            if (b.stats.halvesCollapses > before)
+                b.stats.relaxed.push_back(std::to_string(b.stats.halvesCollapses - before) +
+                                          " collapses made on two halves side by side first (a band of " +
+                                          std::to_string(b.stats.halvesBandVertices) + " vertices between them)");
             collapseToTarget(b.mesh, b.ctx, b.stats, nullptr);
         });
     }

@@ -147,7 +147,7 @@ ProxyBox modelBox(MeshType& m)
 // meshes of the chain's own (enough where MeshType has no optional components to enable).
 // The result has the same form as buildLodSet's; result.steps holds, per kept level, the
 // collapse statistics up to it, whose `relaxed` lines say what gave way since the level
-// before.
+// before (and, for a large piece, that it started as two halves).
 template <class MeshType>
 LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChainOptions& options,
                            const std::function<MeshType&(int)>& newLevel, vcg::CallBackPos* progress = nullptr,

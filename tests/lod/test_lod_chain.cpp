@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
+#include <string>
 #include <vector>
 
 using namespace cadlod;
@@ -197,6 +199,9 @@ TEST(LodChain, LargePiecesStartAsTwoHalvesWithTheSameChainOnTwoThreads)
     ASSERT_FALSE(one.result.steps.empty());
     EXPECT_GT(one.result.steps[0].halvesCollapses, 0);  // level 1
     EXPECT_GT(one.result.steps[0].halvesBandVertices, 0);
+    const std::vector<std::string>& said = one.result.steps[0].relaxed;  // logged with the level
+    EXPECT_TRUE(std::any_of(said.begin(), said.end(),
+                            [](const std::string& line) { return line.find("two halves side by side") != std::string::npos; }));
     ASSERT_EQ(one.result.levels.size(), two.result.levels.size());
     for (std::size_t i = 0; i < one.result.levels.size(); ++i) {
         EXPECT_EQ(one.result.levels[i].faces, two.result.levels[i].faces) << "level " << i;
