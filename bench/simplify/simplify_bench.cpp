@@ -182,6 +182,34 @@ std::vector<std::string> split(const std::string& s)
     return out;
 }
 
+// A run's time and peak, for the ratios printed under the table.
+struct Timed {
+    std::string mesh, red, tool;
+    double seconds, peakKb;
+};
+
+// Every other tool against `reference` on the same mesh and reduction: throughput (the
+// reference's time over the tool's) and peak memory, the figures issue 14 asks for.
+void printRatios(const std::vector<Timed>& timed, const std::string& reference)
+{
+    bool header = false;
+    for (const Timed& ref : timed) {
+        if (ref.tool != reference)
+            continue;
+        for (const Timed& t : timed) {
+            if (t.tool == reference || t.mesh != ref.mesh || t.red != ref.red || !(t.seconds > 0))
+                continue;
+            if (!header) {
+                std::printf("\n| mesh | red. | tool | throughput / %s | peak / %s |\n|---|---|---|---|---|\n",
+                            reference.c_str(), reference.c_str());
+                header = true;
+            }
+            std::printf("| %s | %s%% | %s | %.2f | %.2f |\n", t.mesh.c_str(), t.red.c_str(), t.tool.c_str(),
+                        ref.seconds / t.seconds, ref.peakKb > 0 ? t.peakKb / ref.peakKb : 0.0);
+        }
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -219,10 +247,13 @@ int main(int argc, char** argv)
     std::printf("| mesh | red. | tool | tris in | tris out | s | tris/s | peak MB | c mean | c p5 | c<0.1 | "
                 "H max %%diag | H mean %%diag | flipped | non-manif. |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::vector<Timed> timed;
     for (const MeshSpec& spec : meshes)
         for (const std::string& red : split(reductions))
             for (const std::string& tool : split(tools)) {
                 const Row r = runForked(spec, tool, std::stoi(red));
+                if (r.ok)
+                    timed.push_back({spec.name, red, tool, r.seconds, double(r.peakKb)});
                 if (!r.ok) {
                     std::printf("| %s | %s%% | %s | failed |\n", spec.name.c_str(), red.c_str(), tool.c_str());
                     continue;
@@ -237,5 +268,6 @@ int main(int argc, char** argv)
                     std::printf(" - | - | - | - | - | - | - |\n");
                 std::fflush(stdout);
             }
+    printRatios(timed, "vcglib");
     return 0;
 }
