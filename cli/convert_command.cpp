@@ -13,7 +13,6 @@
 #include "core/lod_chain.h"
 #include "flt_writer.h"
 
-
 #include <chrono>
 #include <deque>
 #include <memory>

@@ -5,7 +5,6 @@
 #include "mesh_files.h"
 #include "report_json.h"
 
-
 #include <cstdio>
 #include <iostream>
 #include <memory>

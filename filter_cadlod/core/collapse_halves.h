@@ -232,21 +232,10 @@ struct HalfSession {
     {
         EntryPool::Use use(pool);
         const int stopAt = liveFaces - cap;
-        while (!heap.empty() && liveFaces > stopAt && heap.front().pri <= threshold) {
-            if (heap.size() > std::size_t(Collapse::HeapSimplexRatio(nullptr) * std::max(liveFaces, 1))) {
-                heapDropStale(heap);
-                if (heap.empty())
-                    break;
-            }
-            const auto top = heapPop(heap);
-            auto* operation = top.locModPtr;
-            if (operation->IsUpToDate() && operation->IsFeasible(&ctx)) {
-                operation->Execute(m, &ctx);
-                operation->UpdateHeap(heap, &ctx);
-                ++stats.collapses;
-            }
-            delete operation;
-        }
+        heapRun(
+            heap, m, &ctx, stats.collapses,
+            [&] { return liveFaces > stopAt && heap.front().pri <= threshold; },
+            [&] { return std::size_t(Collapse::HeapSimplexRatio(nullptr) * std::max(liveFaces, 1)); });
     }
 
     CollapseContext<MeshType> ctx;

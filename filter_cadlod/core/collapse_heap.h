@@ -92,4 +92,31 @@ void heapDropStale(Heap& h)
     heapMake(h);
 }
 
+// Runs the heap's operations, cheapest first, while it has entries and `goOn()` holds, as
+// vcglib's LocalOptimization does: one that is up to date and feasible is executed and
+// pushes its neighbours again; `performed` counts those. Stale entries are dropped whenever
+// the heap holds more than `maxEntries()`. Returns whether entries are left.
+template <class Heap, class MeshType, class Params, class GoOn, class MaxEntries>
+bool heapRun(Heap& h, MeshType& m, Params* pp, int& performed, const GoOn& goOn, const MaxEntries& maxEntries)
+{
+    while (!h.empty() && goOn()) {
+        if (h.size() > maxEntries()) {
+            heapDropStale(h);
+            if (h.empty())
+                break;
+        }
+        const auto top = heapPop(h);
+        auto* operation = top.locModPtr;
+        if (!h.empty())
+            __builtin_prefetch(h.front().locModPtr);  // most likely the next one
+        if (operation->IsUpToDate() && operation->IsFeasible(pp)) {
+            ++performed;
+            operation->Execute(m, pp);
+            operation->UpdateHeap(h, pp);
+        }
+        delete operation;
+    }
+    return !h.empty();
+}
+
 }  // namespace cadlod

@@ -299,27 +299,10 @@ bool relaxShapeGuards(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
 template <class MeshType>
 bool runHeap(vcg::LocalOptimization<MeshType>& session)
 {
-    auto& heap = session.h;
     session.nPerformedOps = 0;
-    while (!session.GoalReached() && !heap.empty()) {
-        if (heap.size() > session.m.SimplexNumber() * session.HeapSimplexRatio) {
-            heapDropStale(heap);
-            if (heap.empty())
-                break;
-        }
-        const auto top = heapPop(heap);
-        auto* operation = top.locModPtr;
-        session.currMetric = top.pri;
-        if (!heap.empty())
-            __builtin_prefetch(heap.front().locModPtr);  // most likely the next one
-        if (operation->IsUpToDate() && operation->IsFeasible(session.pp)) {
-            ++session.nPerformedOps;
-            operation->Execute(session.m, session.pp);
-            operation->UpdateHeap(heap, session.pp);
-        }
-        delete operation;
-    }
-    return !heap.empty();
+    return heapRun(
+        session.h, session.m, session.pp, session.nPerformedOps, [&] { return !session.GoalReached(); },
+        [&] { return std::size_t(session.m.SimplexNumber() * session.HeapSimplexRatio); });
 }
 
 }  // namespace detail
