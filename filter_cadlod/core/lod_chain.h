@@ -62,6 +62,10 @@ inline constexpr double kCloseUpFactor = 32.0;
 // slow, and a few dozen per face find the largest distance of a flat triangle to the
 // surface it replaces (MeshLab's Hausdorff filter samples one point per vertex).
 inline constexpr std::size_t kBackwardSamplesPerFace = 256;
+// ...but never fewer than this many in all: a level of a few dozen faces, each large, would
+// otherwise be sampled too sparsely to find its largest distance within the 5 % that an
+// independent re-measurement may find beyond it.
+inline constexpr std::size_t kMinBackwardSamples = 32768;
 
 namespace detail {
 
@@ -191,7 +195,8 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     };
     auto measure = [&](MeshType& mesh) {
         Measures m;
-        const std::size_t backwardSamples = std::min(samples, kBackwardSamplesPerFace * std::size_t(mesh.fn));
+        const std::size_t backwardSamples =
+            std::min(samples, std::max(kMinBackwardSamples, kBackwardSamplesPerFace * std::size_t(mesh.fn)));
         together([&] { m.distance = distanceToOriginal(mesh, backwardSamples); },
                  [&] { m.compactness = meshCompactness(mesh); });
         return m;

@@ -61,7 +61,7 @@ struct SimplifyParams {
     bool keepColorBorders = true;    // edges between faces of different colours (materials) are features
     // What a collapse that breaks a feature (crosses a crease, moves a corner or boundary
     // vertex) is ranked at: this many times its quadric cost. 0: features are hard locks.
-    double featurePenalty = 8.0;
+    double featurePenalty = 4.0;
     // When the face target is not reached with the shape guards on, relax them; then
     // remove the smallest connected components whole (each logged). Off: stop early.
     bool relaxToReachTarget = true;
