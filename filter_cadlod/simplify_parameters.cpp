@@ -46,6 +46,10 @@ void addPlacementParameters(RichParameterList& par)
                            "Free collapses making triangles less compact than this wait longer."));
     par.addParam(RichFloat("largeFaceWeight", d.largeFaceWeight, "Large-face weight",
                            "Share of a face's full area added to the nearly equal weight every face's plane gets: large faces (a plate's top) keep their place. 0: all faces weigh the same."));
+    par.addParam(RichFloat("shadingWeight", d.shadingWeight, "Shading weight",
+                           "A collapse that turns faces more than the shading angle from their input faces also costs this times the squared bbox diagonal times their area times (1 - cos of the turn). 0: geometry alone."));
+    par.addParam(RichFloat("shadingAngle", d.shadingAngle, "Shading angle (degrees)",
+                           "Faces turned less than this from their input faces keep their shade: not priced."));
     par.addParam(RichBool("planarQuadric", d.planarQuadric, "Planar quadrics",
                           "Tiny extra quadrics on every edge: steadier flat regions."));
     par.addParam(RichBool("relaxToReachTarget", d.relaxToReachTarget, "Reach the target",
@@ -83,6 +87,10 @@ void readPlacementParameters(const RichParameterList& par, SimplifyParams& p)
         p.qualityThreshold = par.getFloat("qualityThreshold");
     if (par.hasParameter("largeFaceWeight"))
         p.largeFaceWeight = par.getFloat("largeFaceWeight");
+    if (par.hasParameter("shadingWeight"))
+        p.shadingWeight = par.getFloat("shadingWeight");
+    if (par.hasParameter("shadingAngle"))
+        p.shadingAngle = par.getFloat("shadingAngle");
     if (par.hasParameter("planarQuadric"))
         p.planarQuadric = par.getBool("planarQuadric");
     if (par.hasParameter("keepPartBorders"))

@@ -164,6 +164,8 @@ struct CollapseContext : public vcg::BaseParameterClass {
     double roundingError2 = 0.0;  // (kRoundingOfFloat * the coordinates' magnitude)²
     double maxErrorAbs = 0.0;     // 0: unbounded
     double cosNormalLimit = -1.0;
+    double cosShadingAngle = 1.0;  // faces turned further from their input face change shade
+    double shadingScale = 0.0;     // shadingWeight × diagonal²: the price of a unit of turned area
     double largestError = 0.0;    // over executed collapses
     double largestFeatureBreak = 0.0;  // largest error of an executed collapse that broke a feature
     bool shapeGuards = true;      // minCompactness and the free-sliver guard apply (relaxed last)
@@ -634,6 +636,24 @@ private:
         return n;
     }
 
+    // How much of the ring changes shade with the new vertex at p: the sum, over the faces
+    // turned more than the shading angle from the face they were in the input, of area ×
+    // (1 − cos of the turn). Turns below the angle (a crease sliding along a fillet, a facet
+    // of a fine cylinder) are not counted: pricing those costs Hausdorff and slivers at 50 %
+    // for no shading a viewer sees.
+    static double shadedArea(const Context& ctx, const vcg::Point3d& p)
+    {
+        double sum = 0.0;
+        for (const RingFace& f : ctx.ring) {
+            const vcg::Point3d n = (f.a - p) ^ (f.b - p);  // twice the area, along the normal
+            const double doubleArea = n.Norm();
+            const double along = n * f.original;
+            if (doubleArea > 0 && along < ctx.cosShadingAngle * doubleArea)
+                sum += 0.5 * (doubleArea - along);
+        }
+        return sum;
+    }
+
     // The compactness face f of the ring takes with the new vertex at p, or kTurned if the
     // normal checks refuse it (it turns too far, or away from the input surface).
     static constexpr double kTurned = -1.0;
@@ -762,6 +782,8 @@ private:
             if (c.breaks && penalty <= 0)
                 continue;
             c.ranked = c.breaks ? c.cost * std::max(1.0, penalty) : c.cost;
+            if (ctx.shadingScale > 0 && c.cost > flatFloor)
+                c.ranked += ctx.shadingScale * shadedArea(ctx, c.p);
             cand[kept++] = c;
         }
         return kept;

@@ -231,6 +231,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // A level's budget is a Hausdorff distance, which the same weight for every face reaches
     // with fewer faces; large faces weighing more serve shading at a fixed face count.
     params.largeFaceWeight = 0.0;
+    params.shadingWeight = 0.0;  // so does pricing turned faces
     params.minCompactness = 0.05;
     SimplifyStats stats;
     stats.facesBefore = working.fn;

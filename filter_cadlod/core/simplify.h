@@ -44,8 +44,10 @@ inline bool validateParams(const SimplifyParams& p, std::string& why)
     else if (!(p.featureAngle >= 0 && p.featureAngle <= 180) || !(p.normalThreshold > 0 && p.normalThreshold <= 180))
         why = "feature angle must be 0..180 degrees, normal threshold 0..180 degrees";
     else if (p.tieTolerance < 0 || p.flatTolerance < 0 || p.boundaryWeight < 0 || p.minCompactness < 0 ||
-             p.largeFaceWeight < 0)
-        why = "tolerances, boundary weight, minimum compactness and large-face weight must not be negative";
+             p.largeFaceWeight < 0 || p.shadingWeight < 0)
+        why = "tolerances, boundary weight, minimum compactness, large-face and shading weights must not be negative";
+    else if (!(p.shadingAngle >= 0 && p.shadingAngle <= 180))
+        why = "shading angle must be 0..180 degrees";
     else
         return true;
     return false;
@@ -215,6 +217,8 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     ctx.roundingError2 = std::pow(kRoundingOfFloat * std::max(ctx.diagonal, detail::coordinateReach(m)), 2);
     ctx.maxErrorAbs = params.maxError * ctx.diagonal;
     ctx.cosNormalLimit = std::cos(params.normalThreshold * M_PI / 180.0);
+    ctx.cosShadingAngle = std::cos(params.shadingAngle * M_PI / 180.0);
+    ctx.shadingScale = params.shadingWeight * ctx.diagonal * ctx.diagonal;
 
     stats.degenerateFaces = detail::deleteFacesRepeatingAVertex(m);
     vcg::tri::UpdateTopology<MeshType>::VertexFace(m);

@@ -56,6 +56,14 @@ struct SimplifyParams {
     // small faces' planes weighing about the same (a face of mean area weighs 1.5 caps) while a
     // face 100 times the mean weighs 51. Chosen on the corpus for shading (docs/benchmarks.md).
     double largeFaceWeight = 0.005;
+    // Shading: a face that turns more than shadingAngle degrees from the face it was in the
+    // input is lit differently over its whole area, which a viewer sees even where the surface
+    // moved by a hair (a coarse cylinder's trough flattened into a band). A collapse is also
+    // ranked by shadingWeight × diagonal² × the sum over such faces of area × (1 − cos of the
+    // turn): the share of the model's size that changes shade. 0: geometry alone. Chosen on
+    // the corpus for shading and Hausdorff together (docs/benchmarks.md).
+    double shadingWeight = 1e-5;
+    double shadingAngle = 12.0;      // degrees
     bool planarQuadric = false;      // tiny edge quadrics everywhere: steadier flat regions
     bool keepPartBorders = true;     // edges between faces of different cadlod_part ids are features
     bool keepColorBorders = true;    // edges between faces of different colours (materials) are features
