@@ -80,26 +80,31 @@ TEST(TunnelCut, TheTestPlateIsAClosedSurfaceWithOneTunnel)
 
 // Without the cut the link condition keeps the hole open, and the plate stops far above a
 // far-field target; with it the plate reaches the target as a closed, oriented surface
-// without the tunnel, and says so.
+// without the tunnel, and says so. The target is 14 faces: the last collapse down to 12
+// removes the last vertex left of the hole, and which of two mirror-image states the ties
+// of the symmetric plate lead to decides whether it costs 4.6 or 8.6 (Hausdorff 3.9 or 7.8,
+// geometry alone deciding that step either way); the shading price tips those ties
+// (docs/benchmarks.md).
 TEST(TunnelCut, DrilledPlateClosesItsHoleToReachTheTarget)
 {
+    constexpr int kTarget = 14;
     for (bool close : {false, true}) {
         TestMesh input, m;
         makeDrilledPlate(input);
         copyMesh(m, input);
-        SimplifyParams p = targetParams(12);
+        SimplifyParams p = targetParams(kTarget);
         p.closeTunnels = close;
         const SimplifyStats s = simplify(m, p);
         vcg::tri::Allocator<TestMesh>::CompactEveryVector(m);
         ASSERT_TRUE(s.ok) << s.message;
         EXPECT_TRUE(closedAndOriented(m)) << close;
         if (!close) {
-            EXPECT_GT(m.fn, 12);
+            EXPECT_GT(m.fn, kTarget);
             EXPECT_EQ(eulerCharacteristic(m), 0);
             EXPECT_EQ(s.closedTunnels, 0);
             continue;
         }
-        EXPECT_LE(m.fn, 12) << s.message;
+        EXPECT_LE(m.fn, kTarget) << s.message;
         EXPECT_EQ(eulerCharacteristic(m), 2);
         EXPECT_EQ(s.closedTunnels, 1);
         EXPECT_TRUE(logSays(s, "closed 1 tunnel")) << (s.relaxed.empty() ? "" : s.relaxed.front());
