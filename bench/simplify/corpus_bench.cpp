@@ -27,6 +27,7 @@
 #include "mesh_checks.h"
 #include "peer_cgal.h"
 #include "forked_run.h"
+#include "indexed_mesh.h"
 #include "mesh_loading.h"
 #include "peer_meshopt.h"
 #include "stock_quadric.h"
@@ -61,6 +62,7 @@
 #include <vector>
 
 using cadlod::test::TestMesh;
+using cadlod::test::toIndexed;
 
 namespace {
 
@@ -120,23 +122,6 @@ bool loadCorpusPly(const std::string& path, TestMesh& m)
             h[f] = parts[f];
     }
     return true;
-}
-
-cadlod::shading::IndexedMesh toIndexed(const TestMesh& m)
-{
-    cadlod::shading::IndexedMesh out;
-    std::vector<std::uint32_t> index(m.vert.size(), 0);
-    for (std::size_t v = 0; v < m.vert.size(); ++v)
-        if (!m.vert[v].IsD()) {
-            index[v] = std::uint32_t(out.xyz.size() / 3);
-            for (int k = 0; k < 3; ++k)
-                out.xyz.push_back(double(m.vert[v].cP()[k]));
-        }
-    for (const auto& f : m.face)
-        if (!f.IsD())
-            for (int k = 0; k < 3; ++k)
-                out.tri.push_back(index[f.cV(k) - &m.vert[0]]);
-    return out;
 }
 
 // What cadlod's log says about a run (the filter's log lines), for looking into a loss.

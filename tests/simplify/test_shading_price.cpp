@@ -4,10 +4,9 @@
 // on generated CAD parts where a far reduction must either flatten a curved surface or give up
 // small details, the price leaves fewer pixels shaded differently from the input.
 #include "cad_meshes.h"
+#include "indexed_mesh.h"
 #include "simplify_test_util.h"
 #include "test_mesh.h"
-
-#include "shading_error.h"
 
 #include "core/simplify.h"
 
@@ -19,23 +18,6 @@ using namespace cadlod;
 using namespace cadlod::test;
 
 namespace {
-
-shading::IndexedMesh toIndexed(const TestMesh& m)
-{
-    shading::IndexedMesh out;
-    std::vector<std::uint32_t> index(m.vert.size(), 0);
-    for (std::size_t v = 0; v < m.vert.size(); ++v)
-        if (!m.vert[v].IsD()) {
-            index[v] = std::uint32_t(out.xyz.size() / 3);
-            for (int k = 0; k < 3; ++k)
-                out.xyz.push_back(double(m.vert[v].cP()[k]));
-        }
-    for (const auto& f : m.face)
-        if (!f.IsD())
-            for (int k = 0; k < 3; ++k)
-                out.tri.push_back(index[f.cV(k) - &m.vert[0]]);
-    return out;
-}
 
 // The share of pixels a viewer sees differ from the input after a reduction by `percent`.
 double visibleAfter(const std::function<void(CadBuilder&)>& make, double percent, double shadingWeight, int* faces)
