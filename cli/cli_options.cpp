@@ -30,6 +30,11 @@ void addProtectionOptions(CLI::App& app, ProtectionArgs& a)
                    "A collapse that breaks a feature costs this many times its quadric cost (0: hard lock)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
+    app.add_option("--shading-weight", a.shadingWeight,
+                   "Price of the faces a collapse turns further than the shading angle from their input faces, per squared "
+                   "bbox diagonal of turned area (0: geometry alone)")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
     app.add_flag("--no-part-borders", a.noPartBorders, "Edges between parts are not features");
     app.add_flag("--no-colour-borders,--no-color-borders", a.noColorBorders,
                  "Edges between colours (materials) are not features");
@@ -89,6 +94,7 @@ void applyProtection(const ProtectionArgs& a, SimplifyParams& p)
 {
     p.featureAngle = a.featureAngle;
     p.featurePenalty = a.featurePenalty;
+    p.shadingWeight = a.shadingWeight;
     p.keepPartBorders = !a.noPartBorders;
     p.keepColorBorders = !a.noColorBorders;
     p.preserveBoundary = !a.noBoundary;
@@ -123,6 +129,7 @@ nlohmann::json toJson(const ImportArgs& a)
 nlohmann::json toJson(const ProtectionArgs& a)
 {
     return {{"featureAngle", a.featureAngle},   {"featurePenalty", a.featurePenalty},
+            {"shadingWeight", a.shadingWeight},
             {"keepPartBorders", !a.noPartBorders}, {"keepColourBorders", !a.noColorBorders},
             {"preserveBoundary", !a.noBoundary}, {"relaxToReachTarget", !a.noRelax},
             {"closeTunnels", !a.keepTunnels}};

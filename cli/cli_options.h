@@ -21,6 +21,7 @@ struct ImportArgs {
 struct ProtectionArgs {  // defaults: the simplifier's own
     double featureAngle = SimplifyParams{}.featureAngle;
     double featurePenalty = SimplifyParams{}.featurePenalty;
+    double shadingWeight = SimplifyParams{}.shadingWeight;
     bool noPartBorders = false;
     bool noColorBorders = false;
     bool noBoundary = false;

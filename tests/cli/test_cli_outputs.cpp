@@ -139,6 +139,27 @@ int trianglesOf(const std::string& path)
     return at == std::string::npos ? -1 : std::stoi(info.stdoutText.substr(at + 9));
 }
 
+// --shading-weight reaches the simplifier: on the generated assembly, whose shaft's facets the
+// price keeps at 75 %, 0 (geometry alone) writes another mesh than the default; a negative
+// weight is a usage error.
+TEST(CliOutputs, ShadingWeightReachesTheSimplifier)
+{
+    const std::string dir = freshDirectory("shading");
+    CadBuilder b;
+    assembly(b, 48);
+    writePly(b, dir + "/assembly.ply");
+    const CliRun priced = runCadlod({"simplify", dir + "/assembly.ply", "-o", dir + "/priced.ply", "--reduction", "75"});
+    ASSERT_EQ(priced.exitCode, 0) << priced.stderrText;
+    const CliRun plain = runCadlod(
+        {"simplify", dir + "/assembly.ply", "-o", dir + "/plain.ply", "--reduction", "75", "--shading-weight", "0"});
+    ASSERT_EQ(plain.exitCode, 0) << plain.stderrText;
+    EXPECT_EQ(trianglesOf(dir + "/priced.ply"), trianglesOf(dir + "/plain.ply"));
+    EXPECT_NE(readFile(dir + "/priced.ply"), readFile(dir + "/plain.ply"));
+    const CliRun negative = runCadlod(
+        {"simplify", dir + "/assembly.ply", "-o", dir + "/negative.ply", "--reduction", "75", "--shading-weight", "-1"});
+    EXPECT_EQ(negative.exitCode, 2) << negative.stderrText;
+}
+
 // 0 % asks to remove nothing: the mesh is written as loaded (it was once read as "no
 // reduction given" and simplified by the default 90 %). A face target at or above the
 // mesh's says why nothing was done.
