@@ -169,7 +169,9 @@ struct DistanceSums {
 
 // The points a one-sided Hausdorff distance measures on a mesh: every live vertex (first,
 // their indices in `vertexIndex`), then area-uniform random points, face by face
-// (neighbouring lookups in a row are fast).
+// (neighbouring lookups in a row are fast), and with `everyFace` each face's centroid and
+// edge midpoints: area-uniform points miss the small faces of a coarse mesh, and one of
+// them, spanning a gap, may stand farthest from the other surface.
 struct HausdorffSamples {
     std::vector<vcg::Point3d> points;
     std::vector<std::size_t> vertexIndex;  // mesh.vert index of points[i], i < vertexIndex.size()
@@ -177,7 +179,7 @@ struct HausdorffSamples {
 };
 
 template <class MeshFrom>
-HausdorffSamples hausdorffSamples(MeshFrom& from, std::size_t faceSamples, unsigned seed)
+HausdorffSamples hausdorffSamples(MeshFrom& from, std::size_t faceSamples, unsigned seed, bool everyFace = false)
 {
     HausdorffSamples result;
     std::vector<vcg::Point3d>& points = result.points;
@@ -227,6 +229,13 @@ HausdorffSamples hausdorffSamples(MeshFrom& from, std::size_t faceSamples, unsig
         const vcg::Point3d c = vcg::Point3d::Construct(f->cP(2));
         points.push_back(a + (b - a) * sample.u + (c - a) * sample.v);
     }
+    if (everyFace)
+        for (const auto* f : sources) {
+            const vcg::Point3d a = vcg::Point3d::Construct(f->cP(0));
+            const vcg::Point3d b = vcg::Point3d::Construct(f->cP(1));
+            const vcg::Point3d c = vcg::Point3d::Construct(f->cP(2));
+            points.insert(points.end(), {(a + b + c) / 3.0, (a + b) / 2.0, (b + c) / 2.0, (c + a) / 2.0});
+        }
     return result;
 }
 
@@ -328,9 +337,9 @@ HausdorffStats distancesToSurface(const HausdorffSamples& samples, const detail:
 template <class MeshFrom, class MeshTo>
 HausdorffStats oneSidedHausdorff(MeshFrom& from, detail::ClosestFace<MeshTo>& closest, std::size_t faceSamples,
                                  unsigned seed = 1, std::vector<double>* vertexDistances = nullptr,
-                                 const RunTogether& together = {}, std::size_t meanEvery = 1)
+                                 const RunTogether& together = {}, std::size_t meanEvery = 1, bool everyFace = false)
 {
-    return distancesToSurface(hausdorffSamples(from, faceSamples, seed), closest, vertexDistances, together,
+    return distancesToSurface(hausdorffSamples(from, faceSamples, seed, everyFace), closest, vertexDistances, together,
                               meanEvery);
 }
 

@@ -71,7 +71,8 @@ public:
                       [&] { index_.emplace(original_); });
     }
 
-    // `backwardSamples`: random points on the level (besides its vertices).
+    // `backwardSamples`: random points on the level (besides its vertices and each face's
+    // centroid and edge midpoints).
     SymmetricHausdorff operator()(MeshType& level, std::size_t backwardSamples)
     {
         prepare();
@@ -81,7 +82,10 @@ public:
                 h.forward = distancesToSurface(points_, detail::ClosestFace<MeshType>(level), nullptr, together_,
                                                kMeanEvery);
             },
-            [&] { h.backward = oneSidedHausdorff(level, *index_, backwardSamples, 2, nullptr, together_, kMeanEvery); });
+            [&] {
+                h.backward =
+                    oneSidedHausdorff(level, *index_, backwardSamples, 2, nullptr, together_, kMeanEvery, true);
+            });
         h.diagonal = diagonal_;
         return h;
     }

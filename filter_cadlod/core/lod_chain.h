@@ -5,7 +5,10 @@
 // (d_fill: where the model's diagonal spans the viewport height; a viewer may come closer,
 // and an over-tessellated CAD part loses most of its triangles there already). A distance
 // whose mesh is less than 10 % lighter than the last level's adds no level. Its budget is
-// the error that projects to the pixel error there. Collapse sessions run with that budget
+// the error that projects to the pixel error there. Halfway between two planned distances
+// (a factor of √ratio) the model is copied too; the copy becomes a level only where the
+// next level's measured error overshoots, landing more than the ratio beyond the last
+// level's, so that the chain has no gap wider than the ratio where it can fill one. Collapse sessions run with that budget
 // as their maximum error, one per piece of the model (collapse_buckets.h: whole connected
 // components, side by side), each for the whole chain (the quadrics carry the whole
 // history, so errors do not restart at each level); there features, part borders and
@@ -256,29 +259,62 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // How much the measured Hausdorff distance exceeds the largest collapse error (an RMS
     // distance to the merged planes), learnt level by level.
     double hausdorffPerCollapseError = 2.0;
-    // A level copied out of the pieces, measured while their sessions go on to the next
-    // one. So the next budget uses the ratio learnt up to the level before it, one
-    // level late; that rule does not depend on how the two run, so neither does the chain.
-    struct Pending {
-        MeshType* mesh = nullptr;
+    // A level copied out of the pieces into a snapshot, measured while their sessions go on
+    // to the next one. So the next budget uses the ratio learnt up to the level before it,
+    // one level late; that rule does not depend on how the two run, so neither does the
+    // chain. Halfway (in distance ratio) between two planned levels the pieces are copied
+    // too, into `between`: when the level after it lands more than the distance ratio beyond
+    // the level before (its measured error overshot the budget), the snapshot is measured
+    // and becomes a level of its own, so no gap in the chain is wider than the ratio allows
+    // where the sessions passed through a mesh that fills it. Otherwise it is let go
+    // unmeasured.
+    struct Snapshot {
+        MeshType* mesh = nullptr;  // a scratch mesh, copied into a level mesh when kept
         SimplifyStats stats;
         double collapseError = 0.0;
         Measures measured;
+        bool taken = false;
     };
-    Pending pending;
+    Snapshot pending{&newScratch()};
+    Snapshot between{&newScratch()};
+    auto take = [&](Snapshot& s) {
+        pieces.appendTo(*s.mesh);
+        s.stats = stats;
+        s.stats.facesAfter = s.mesh->fn;
+        s.stats.largestError = pieces.largestError();
+        s.collapseError = s.stats.largestError;
+        s.taken = true;
+        stats.relaxed.clear();
+    };
     auto measurePending = [&] {
         distanceToOriginal.prepare();
-        if (pending.mesh)
+        if (pending.taken)
             pending.measured = measure(*pending.mesh);
     };
+    auto keep = [&](Snapshot& s) {
+        MeshType& mesh = newLevel(int(result.levels.size()));
+        detail::copyWithParts(mesh, *s.mesh);
+        s.mesh->Clear();
+        s.taken = false;
+        addLevel(mesh, s.stats, s.measured);
+    };
     auto settlePending = [&] {
-        if (!pending.mesh)
+        if (!pending.taken)
             return;
-        addLevel(*pending.mesh, pending.stats, pending.measured);
         const double measured = pending.measured.distance.max();
+        const double before = std::max(result.levels.back().hausdorffMax, kRelativeErrorFloor * result.modelSize);
+        if (between.taken && measured > options.distanceRatio * before) {
+            between.measured = measure(*between.mesh);
+            keep(between);
+        } else if (between.taken) {  // what gave way before it is the pending level's to tell
+            auto& lines = pending.stats.relaxed;
+            lines.insert(lines.begin(), between.stats.relaxed.begin(), between.stats.relaxed.end());
+        }
+        between.mesh->Clear();
+        between.taken = false;
         if (measured > 0 && pending.collapseError > 0)
             hausdorffPerCollapseError = std::clamp(measured / pending.collapseError, 1.0, 20.0);
-        pending = Pending();
+        keep(pending);
     };
 
     // The box per component is made where the model is proxyPixels high, from the
@@ -309,8 +345,11 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         return boxProxy.mesh->fn == 0 || boxProxy.measured.distance.max() <= detail::errorBudgetAt(d, view) ||
                pieces.faces() <= boxProxy.mesh->fn;
     };
+    // The distances of the planned levels, each followed by the one halfway to the next.
+    const double halfStep = std::sqrt(options.distanceRatio);
+    bool planned = true;
     int k = 0;
-    for (double d = dFill / kCloseUpFactor;; d *= options.distanceRatio, ++k) {
+    for (double d = dFill / kCloseUpFactor;; d *= halfStep, planned = !planned, k += planned ? 1 : 0) {
         if (d >= dProxy) {
             if (!boxProxy.mesh)
                 takeBox();
@@ -336,14 +375,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
             continue;  // too little lighter than the last level to be worth one
         if (boxProxy.mesh && faces <= boxProxy.mesh->fn)
             break;  // no lighter than the box, which keeps every component's extent
-        MeshType& mesh = newLevel(int(result.levels.size()));
-        pieces.appendTo(mesh);
-        stats.facesAfter = mesh.fn;
-        stats.largestError = pieces.largestError();
-        pending.mesh = &mesh;
-        pending.stats = stats;
-        pending.collapseError = stats.largestError;
-        stats.relaxed.clear();
+        take(planned ? pending : between);
     }
     together(measurePending, [] {});
     settlePending();
