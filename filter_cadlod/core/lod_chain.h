@@ -305,6 +305,12 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         const double before = std::max(result.levels.back().hausdorffMax, kRelativeErrorFloor * result.modelSize);
         if (between.taken && measured > options.distanceRatio * before) {
             between.measured = measure(*between.mesh);
+            char line[200];
+            std::snprintf(line, sizeof line,
+                          "added halfway to the next level, whose error (%.4g %% of the diagonal) is more than the "
+                          "distance ratio beyond the last level's (%.4g %%)",
+                          100 * measured / result.modelSize, 100 * before / result.modelSize);
+            between.stats.relaxed.push_back(line);
             keep(between);
         } else if (between.taken) {  // what gave way before it is the pending level's to tell
             auto& lines = pending.stats.relaxed;

@@ -114,6 +114,31 @@ TEST(LodChain, SmallPartsGoOnlyWithinTheBudget)
     EXPECT_GT(removed, 0);
 }
 
+// Where a level's measured error lands more than the distance ratio beyond the level before
+// it (its budget underestimated the distance), the mesh the sessions passed through halfway is
+// measured and becomes a level before it, said in its log lines.
+TEST(LodChain, AGapWiderThanTheRatioGetsTheLevelHalfwayThrough)
+{
+    LodChainOptions options;
+    Chain c(assemblyBuilder(), options);
+    ASSERT_TRUE(c.result.ok()) << c.result.error;
+    const auto& levels = c.result.levels;
+    int added = 0;
+    for (std::size_t k = 1; k + 1 < levels.size(); ++k) {
+        const std::vector<std::string>& said = c.result.steps[k - 1].relaxed;
+        if (std::none_of(said.begin(), said.end(),
+                         [](const std::string& line) { return line.find("added halfway") != std::string::npos; }))
+            continue;
+        ++added;
+        EXPECT_GT(levels[k + 1].hausdorffMax, options.distanceRatio * levels[k - 1].hausdorffMax) << "level " << k;
+        EXPECT_GT(levels[k].hausdorffMax, levels[k - 1].hausdorffMax) << "level " << k;
+        EXPECT_LT(levels[k].hausdorffMax, levels[k + 1].hausdorffMax) << "level " << k;
+        EXPECT_LT(levels[k].faces, levels[k - 1].faces) << "level " << k;
+        EXPECT_GT(levels[k].faces, levels[k + 1].faces) << "level " << k;
+    }
+    EXPECT_GT(added, 0);
+}
+
 TEST(LodChain, CullingEndsTheLastRangeWhereTheModelIsThatSmall)
 {
     LodChainOptions options;
