@@ -8,12 +8,12 @@
 // the error that projects to the pixel error there. Halfway between two planned distances
 // (a factor of √ratio) the model is copied too; the copy becomes a level only where the
 // next level's measured error overshoots, landing more than the ratio beyond the last
-// level's, so that the chain has no gap wider than the ratio where it can fill one. Collapse sessions run with that budget
-// as their maximum error, one per piece of the model (collapse_buckets.h: whole connected
-// components, side by side), each for the whole chain (the quadrics carry the whole
-// history, so errors do not restart at each level); there features, part borders and
-// whole small components give way as soon as breaking them costs less than the budget
-// (simplify.h). The pieces together are then taken as level k and measured against level
+// level's, so that the chain has no gap wider than the ratio where it can fill one.
+// Collapse sessions run with that budget as their maximum error, one per piece of the
+// model (collapse_buckets.h: whole connected components, side by side), each for the whole
+// chain (the quadrics carry the whole history, so errors do not restart at each level);
+// there features, part borders and whole small components give way as soon as breaking
+// them costs less than the budget (simplify.h). The pieces together are then taken as level k and measured against level
 // 0 (symmetric Hausdorff) while the sessions go on to the next level (the caller's
 // RunTogether may run both at once); the ratio between the measured and the requested
 // error steers the budgets from the level after next, so a collapse error that
@@ -270,19 +270,18 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // unmeasured.
     struct Snapshot {
         MeshType* mesh = nullptr;  // a scratch mesh, copied into a level mesh when kept
-        SimplifyStats stats;
-        double collapseError = 0.0;
+        SimplifyStats stats;  // its largestError: the largest collapse error up to it
         Measures measured;
         bool taken = false;
     };
-    Snapshot pending{&newScratch()};
-    Snapshot between{&newScratch()};
+    Snapshot pending, between;
+    pending.mesh = &newScratch();
+    between.mesh = &newScratch();
     auto take = [&](Snapshot& s) {
         pieces.appendTo(*s.mesh);
         s.stats = stats;
         s.stats.facesAfter = s.mesh->fn;
         s.stats.largestError = pieces.largestError();
-        s.collapseError = s.stats.largestError;
         s.taken = true;
         stats.relaxed.clear();
     };
@@ -302,14 +301,14 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         if (!pending.taken)
             return;
         const double measured = pending.measured.distance.max();
-        const double before = std::max(result.levels.back().hausdorffMax, kRelativeErrorFloor * result.modelSize);
-        if (between.taken && measured > options.distanceRatio * before) {
+        const double lastError = std::max(result.levels.back().hausdorffMax, kRelativeErrorFloor * result.modelSize);
+        if (between.taken && measured > options.distanceRatio * lastError) {
             between.measured = measure(*between.mesh);
             char line[200];
             std::snprintf(line, sizeof line,
                           "added halfway to the next level, whose error (%.4g %% of the diagonal) is more than the "
                           "distance ratio beyond the last level's (%.4g %%)",
-                          100 * measured / result.modelSize, 100 * before / result.modelSize);
+                          100 * measured / result.modelSize, 100 * lastError / result.modelSize);
             between.stats.relaxed.push_back(line);
             keep(between);
         } else if (between.taken) {  // what gave way before it is the pending level's to tell
@@ -318,8 +317,9 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         }
         between.mesh->Clear();
         between.taken = false;
-        if (measured > 0 && pending.collapseError > 0)
-            hausdorffPerCollapseError = std::clamp(measured / pending.collapseError, 1.0, 20.0);
+        const double collapseError = pending.stats.largestError;
+        if (measured > 0 && collapseError > 0)
+            hausdorffPerCollapseError = std::clamp(measured / collapseError, 1.0, 20.0);
         keep(pending);
     };
 
