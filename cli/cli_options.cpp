@@ -35,7 +35,8 @@ void addProtectionOptions(CLI::App& app, ProtectionArgs& a)
                    "bbox diagonal of turned area (0: geometry alone)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
-    app.add_flag("--no-part-borders", a.noPartBorders, "Edges between parts are not features");
+    app.add_flag("--part-borders", a.partBorders,
+                 "Edges between parts are features, also where the parts meet flat and in one colour");
     app.add_flag("--no-colour-borders,--no-color-borders", a.noColorBorders,
                  "Edges between colours (materials) are not features");
     app.add_flag("--no-boundary", a.noBoundary, "Open boundaries get no constraint quadrics");
@@ -95,7 +96,7 @@ void applyProtection(const ProtectionArgs& a, SimplifyParams& p)
     p.featureAngle = a.featureAngle;
     p.featurePenalty = a.featurePenalty;
     p.shadingWeight = a.shadingWeight;
-    p.keepPartBorders = !a.noPartBorders;
+    p.keepPartBorders = a.partBorders;
     p.keepColorBorders = !a.noColorBorders;
     p.preserveBoundary = !a.noBoundary;
     p.relaxToReachTarget = !a.noRelax;
@@ -130,7 +131,7 @@ nlohmann::json toJson(const ProtectionArgs& a)
 {
     return {{"featureAngle", a.featureAngle},   {"featurePenalty", a.featurePenalty},
             {"shadingWeight", a.shadingWeight},
-            {"keepPartBorders", !a.noPartBorders}, {"keepColourBorders", !a.noColorBorders},
+            {"keepPartBorders", a.partBorders}, {"keepColourBorders", !a.noColorBorders},
             {"preserveBoundary", !a.noBoundary}, {"relaxToReachTarget", !a.noRelax},
             {"closeTunnels", !a.keepTunnels}};
 }

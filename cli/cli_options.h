@@ -22,7 +22,7 @@ struct ProtectionArgs {  // defaults: the simplifier's own
     double featureAngle = SimplifyParams{}.featureAngle;
     double featurePenalty = SimplifyParams{}.featurePenalty;
     double shadingWeight = SimplifyParams{}.shadingWeight;
-    bool noPartBorders = false;
+    bool partBorders = SimplifyParams{}.keepPartBorders;
     bool noColorBorders = false;
     bool noBoundary = false;
     bool noRelax = false;

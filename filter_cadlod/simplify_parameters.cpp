@@ -10,7 +10,9 @@ void addFeatureParameters(RichParameterList& par)
     par.addParam(RichBool("preserveBoundary", d.preserveBoundary, "Preserve boundary",
                           "Boundary edges are features: boundary vertices stay on the boundary."));
     par.addParam(RichBool("keepPartBorders", d.keepPartBorders, "Keep part borders",
-                          "Edges between CAD parts (cadlod_part attribute) are features."));
+                          "Edges between CAD parts (cadlod_part attribute) are features, also where the parts "
+                          "meet flat and in one colour. Off: creases and colour borders between parts are "
+                          "still kept."));
     par.addParam(RichBool("keepColorBorders", d.keepColorBorders, "Keep colour borders",
                           "Edges between face colours are features (ignored above 256 colours)."));
     par.addParam(RichFloat("featurePenalty", d.featurePenalty, "Feature penalty",

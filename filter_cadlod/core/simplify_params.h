@@ -65,7 +65,15 @@ struct SimplifyParams {
     double shadingWeight = 1e-5;
     double shadingAngle = 12.0;      // degrees
     bool planarQuadric = false;      // tiny edge quadrics everywhere: steadier flat regions
-    bool keepPartBorders = true;     // edges between faces of different cadlod_part ids are features
+    // Edges between faces of different cadlod_part ids as features: off by default. Parts
+    // that are separate solids share no edge, so a part border exists only where the
+    // importer welded two parts' coincident vertices, which is where an exporter split one
+    // body into several IndexedFaceSets: KiCad writes one per B-rep face, about a hundred
+    // for a push button. Those borders are the body's face edges. The ones a viewer sees
+    // are creases (featureAngle) or colour changes (keepColorBorders), both still kept; the
+    // rest pinned every corner of the body's faces and cost 1.5-4x the Hausdorff distance
+    // at 50 % on KiCad's exports (docs/benchmarks.md). On: every part border is a feature.
+    bool keepPartBorders = false;
     bool keepColorBorders = true;    // edges between faces of different colours (materials) are features
     // What a collapse that breaks a feature (crosses a crease, moves a corner or boundary
     // vertex) is ranked at: this many times its quadric cost. 0: features are hard locks.

@@ -2,7 +2,8 @@
 // attributes (so it needs no MeshLab header and works on any vcglib mesh):
 //  - parts: the VRML importer tags every face with a part id (per-face int attribute
 //    "cadlod_part") and stores the part table (per-mesh attribute "cadlod_parts");
-//    the simplifier keeps part borders, the OpenFlight exporter writes one Object per part.
+//    the simplifier can keep part borders (keepPartBorders), the OpenFlight exporter writes
+//    one Object per part.
 //  - LOD levels: the LOD-set filter stores a LodLevel (per-mesh attribute "cadlod_lod")
 //    on every layer of a set, level 0 being the original; the OpenFlight exporter
 //    gathers the layers of one set from the document and writes them as one LOD model.

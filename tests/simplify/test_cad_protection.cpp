@@ -193,10 +193,10 @@ TEST(SimplifyProtection, NoFoldedFacesUnderAggressiveReduction)
     }
 }
 
-TEST(SimplifyProtection, PartBordersAreKept)
+TEST(SimplifyProtection, PartBordersAreKeptWhenAsked)
 {
-    // Two coplanar parts sharing a straight border: the border must stay a straight line
-    // at its place although the plane itself is free to simplify.
+    // Two coplanar parts sharing a straight border: with keepPartBorders the border must
+    // stay a straight line at its place although the plane itself is free to simplify.
     CadBuilder b;
     const int n = 40;
     std::vector<int> grid((n + 1) * (n + 1));
@@ -213,7 +213,9 @@ TEST(SimplifyProtection, PartBordersAreKept)
     TestMesh m;
     b.build(m, true);
     const int before = m.fn;
-    const SimplifyStats s = simplify(m, targetParams(m.fn / 10));
+    SimplifyParams params = targetParams(m.fn / 10);
+    params.keepPartBorders = true;
+    const SimplifyStats s = simplify(m, params);
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_LT(m.fn, before / 2);  // the plane did simplify
     EXPECT_GE(s.featureEdges, n);  // the border column
@@ -244,4 +246,62 @@ TEST(SimplifyProtection, PartBordersAreKept)
     // the wave puts them; its length is the n rows).
     EXPECT_NEAR(borderLength[0], n, 1e-3);
     EXPECT_NEAR(borderLength[1], n, 1e-3);
+}
+
+// A body split into one part per face, as KiCad's VRML exports split theirs (one
+// IndexedFaceSet per B-rep face, welded on import): a capped cylinder whose side is two
+// half-cylinder parts, with a cap part at each end. `colour` gives the half at y < 0 its
+// own colour.
+static void splitCylinder(TestMesh& m, bool colour)
+{
+    CadBuilder b;
+    RevolveSpec spec;
+    spec.segments = 64;
+    spec.cylinderRings = 8;
+    revolve(b, {{0, 0}, {0, 10}, {30, 10}, {30, 0}}, spec);
+    for (std::size_t t = 0; t < b.triangles.size(); ++t) {
+        double y = 0, z = 0;
+        for (int k : b.triangles[t]) {
+            y += b.points[k][1] / 3;
+            z += b.points[k][2] / 3;
+        }
+        b.part[t] = z < 1e-9 ? 0 : z > 30 - 1e-9 ? 3 : y >= 0 ? 1 : 2;
+    }
+    b.build(m, true);
+    auto part = facePartHandle(m);
+    for (auto& f : m.face)
+        f.C() = colour && part[f] == 2 ? vcg::Color4b(200, 30, 30, 255) : vcg::Color4b(128, 128, 128, 255);
+}
+
+TEST(SimplifyProtection, APartBorderIsAFeatureByDefaultOnlyWhereItIsACreaseOrAColourChange)
+{
+    const int rimEdges = 2 * 64;  // the caps meet the side at 90 degrees
+    const int seamEdges = 2 * 8;  // the half-cylinders meet flush, one column each side
+    struct Case {
+        bool colour, keepPartBorders;
+        int features;
+    };
+    for (const Case c : {Case{false, false, rimEdges}, Case{true, false, rimEdges + seamEdges},
+                         Case{false, true, rimEdges + seamEdges}}) {
+        TestMesh m;
+        splitCylinder(m, c.colour);
+        const int before = m.fn;
+        SimplifyParams params = targetParams(m.fn / 4);  // the defaults, but for the face target
+        if (c.keepPartBorders)
+            params.keepPartBorders = true;
+        const SimplifyStats s = simplify(m, params);
+        ASSERT_TRUE(s.ok) << s.message;
+        EXPECT_EQ(s.featureEdges, c.features) << "colour " << c.colour << ", part borders " << c.keepPartBorders;
+        EXPECT_LE(m.fn, before / 4);
+        // Every part keeps faces of its own, and its id.
+        auto part = facePartHandle(m);
+        int faces[4] = {0, 0, 0, 0};
+        for (auto& f : m.face)
+            if (!f.IsD()) {
+                ASSERT_TRUE(part[f] >= 0 && part[f] < 4);
+                ++faces[part[f]];
+            }
+        for (int k = 0; k < 4; ++k)
+            EXPECT_GT(faces[k], 0) << "part " << k;
+    }
 }
