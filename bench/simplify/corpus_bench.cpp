@@ -14,6 +14,7 @@
 //                [--files FILE,...]        more inputs: VRML (assemblies, one part per VRML part) or PLY
 //                [--far-field]             issue 13's far-field check, see below
 //                [--log]                   cadlod's log of every run (what gave way) to stderr
+//                [--part-borders]          cadlod keeps part borders (keepPartBorders, off by default)
 //                [--meshes DIR]            every input and result as PLY (DIR/<part>_input.ply,
 //                                          DIR/<part>_<reduction>_<tool>.ply), to look into a loss
 // --raw writes every tool's row (one Markdown table); --images writes the shading
@@ -136,6 +137,9 @@ void printSimplifyLog(const std::string& what, const cadlod::SimplifyStats& s)
         std::fprintf(stderr, "  %s\n", line.c_str());
 }
 
+// cadlod's parameters but for the face target: the defaults, or as the options set them.
+cadlod::SimplifyParams cadlodParams;
+
 // `logAs`: when not empty, cadlod's log goes to stderr under that name.
 void simplifyWith(const std::string& tool, TestMesh& m, int target, double& seconds, const std::string& logAs = {})
 {
@@ -151,7 +155,7 @@ void simplifyWith(const std::string& tool, TestMesh& m, int target, double& seco
         vcg::tri::UpdateNormal<TestMesh>::PerVertexNormalizedPerFaceNormalized(m);
     const auto t = std::chrono::steady_clock::now();
     if (tool == "cadlod") {
-        cadlod::SimplifyParams p;
+        cadlod::SimplifyParams p = cadlodParams;
         p.targetFaces = target;
         const cadlod::SimplifyStats stats = cadlod::simplify(m, p);
         if (!logAs.empty())
@@ -549,6 +553,7 @@ int main(int argc, char** argv)
         else if (key == "--files") files = split(value());
         else if (key == "--far-field") farField = true;
         else if (key == "--log") log = true;
+        else if (key == "--part-borders") cadlodParams.keepPartBorders = true;
         else {
             std::fprintf(stderr, "unknown option %s (see the head of corpus_bench.cpp)\n", key.c_str());
             return 2;
