@@ -137,3 +137,24 @@ TEST(TunnelCut, NoWiderThanTheMaximumError)
         }
     }
 }
+
+// A tunnel of a surface that also has a boundary is closed too: the spare elements a cut
+// needs are reserved from each component's real Euler characteristic (V - E + F). Counted
+// as if every component were closed (E = 3F/2), the plate below had none, and it stopped
+// above its target with the hole open. Its boundary is a fin, one triangle hanging from a
+// corner of the plate, away from the hole.
+TEST(TunnelCut, APlateWithAnOpenFinStillClosesItsHole)
+{
+    CadBuilder b;
+    const int first = drilledPlate(b, kSide, kThickness, kHoleRadius, 32);
+    const int corner = first + 4;  // the outer square's corner at 45 degrees, (20, 20, 0)
+    b.addTriangle(corner, b.addPoint(24, 20, 0), b.addPoint(24, 24, 0));
+    TestMesh m;
+    b.build(m);
+    constexpr int kTarget = 15;
+    const SimplifyStats s = simplify(m, targetParams(kTarget));
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_EQ(s.boundaryEdges, 3);
+    EXPECT_EQ(s.closedTunnels, 1);
+    EXPECT_LE(m.fn, kTarget) << s.message;
+}
