@@ -50,23 +50,30 @@ namespace detail {
 template <class MeshType>
 int tunnelCount(MeshType& m)
 {
-    using VertexPointer = typename MeshType::VertexPointer;
+    using VertexType = typename MeshType::VertexType;
+    using FaceType = typename MeshType::FaceType;
     std::vector<char> seen(m.vert.size(), 0);
-    std::vector<std::pair<VertexPointer, VertexPointer>> edges;
+    std::vector<const VertexType*> around;  // one vertex's neighbours, no copy of the edges
     int tunnels = 0;
     for (const Component<MeshType>& c : connectedComponents(m)) {
-        long vertices = 0;
-        edges.clear();
+        long vertices = 0, edges = 0;
         for (const auto* f : c.faces)
             for (int j = 0; j < 3; ++j) {
-                char& s = seen[std::size_t(f->cV(j) - &m.vert[0])];
-                vertices += !s;
+                VertexType* v = f->cV(j);
+                char& s = seen[std::size_t(v - &m.vert[0])];
+                if (s)
+                    continue;
                 s = 1;
-                edges.push_back(std::minmax(f->cV(j), f->cV((j + 1) % 3)));
+                ++vertices;
+                around.clear();
+                for (vcg::face::VFIterator<FaceType> vfi(v); !vfi.End(); ++vfi)
+                    for (int k = 0; k < 3; ++k)
+                        if (vfi.F()->cV(k) > v)  // each edge from its lower vertex
+                            around.push_back(vfi.F()->cV(k));
+                std::sort(around.begin(), around.end());
+                edges += long(std::unique(around.begin(), around.end()) - around.begin());
             }
-        std::sort(edges.begin(), edges.end());
-        const long edgeCount = long(std::unique(edges.begin(), edges.end()) - edges.begin());
-        const long twoMinusChi = 2 - (vertices - edgeCount + long(c.faces.size()));
+        const long twoMinusChi = 2 - (vertices - edges + long(c.faces.size()));
         tunnels += int(std::max(0L, twoMinusChi));
     }
     return tunnels;
