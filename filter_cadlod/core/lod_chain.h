@@ -12,17 +12,18 @@
 // Collapse sessions run with that budget as their maximum error, one per piece of the
 // model (collapse_buckets.h: whole connected components, side by side), each for the whole
 // chain (the quadrics carry the whole history, so errors do not restart at each level);
-// there features, part borders and whole small components give way as soon as breaking
-// them costs less than the budget (simplify.h). The pieces together are then taken as level k and measured against level
-// 0 (symmetric Hausdorff) while the sessions go on to the next level (the caller's
-// RunTogether may run both at once); the ratio between the measured and the requested
-// error steers the budgets from the level after next, so a collapse error that
-// underestimates the distance a viewer sees is corrected level by level. Where the model
-// is `proxyPixels` high, a proxy is made: one axis-aligned box per remaining connected
-// component (a box per part). Collapse levels go on beyond it only while the box's
-// measured error is still above the budget and they are heavier than the box (a jack's
-// deep socket keeps its box far off). Where the model is a couple of pixels high, the
-// tetrahedron inscribed in each box follows, and last one tetrahedron for the whole model.
+// there features (part borders too, when they are kept) and whole small components give
+// way as soon as breaking them costs less than the budget (simplify.h). The pieces
+// together are then taken as level k and measured against level 0 (symmetric Hausdorff)
+// while the sessions go on to the next level (the caller's RunTogether may run both at
+// once); the ratio between the measured and the requested error steers the budgets from
+// the level after next, so a collapse error that underestimates the distance a viewer sees
+// is corrected level by level. Where the model is `proxyPixels` high, a proxy is made:
+// one axis-aligned box per remaining connected component (a box per part). Collapse
+// levels go on beyond it only while the box's measured error is still above the budget and
+// they are heavier than the box (a jack's deep socket keeps its box far off). Where the
+// model is a couple of pixels high, the tetrahedron inscribed in each box follows, and last
+// one tetrahedron for the whole model.
 //
 // Every level's range comes from its measured error (lod_plan.h): it is drawn from where
 // that error projects to the pixel error, until the next level's does. The last level is
