@@ -55,6 +55,8 @@ struct LodChainOptions {
     RunTogether runTogether;          // measuring a level beside the next collapses; empty: in sequence
 };
 
+// The share of the simplifier's feature penalty that chain levels use (see buildLodChain).
+inline constexpr double kChainFeaturePenaltyShare = 0.5;
 // Where the model is this many pixels high, a tetrahedron per component replaces its box.
 inline constexpr double kTetrahedronPixels = 2.0;
 // Switch-in distance of the last level when the model is never culled.
@@ -237,6 +239,12 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     params.largeFaceWeight = 0.0;
     params.shadingWeight = 0.0;  // so does pricing turned faces
     params.minCompactness = 0.05;
+    // Breaking a feature costs its own quadric error (the feature's constraint planes are in
+    // it) times the penalty. The penalty ranks feature breaks behind collapses of the same
+    // error, which keeps creases crisp at a fixed face count; under a Hausdorff budget it
+    // keeps a level heavier than its error needs. Half of it (0 stays a hard lock) is what
+    // served the chains best (docs/benchmarks.md).
+    params.featurePenalty *= kChainFeaturePenaltyShare;
     SimplifyStats stats;
     stats.facesBefore = working.fn;
     std::string why;
