@@ -35,6 +35,7 @@
 #include "lod_builder.h"
 #include "run_together.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <deque>
@@ -55,6 +56,10 @@ struct LodChainOptions {
     RunTogether runTogether;          // measuring a level beside the next collapses; empty: in sequence
 };
 
+// The box proxy is tried with these shares of each component's area left out at both ends
+// of each axis (trimmedBox), and the one with the smallest measured error is kept: 0 is the
+// box of the component's vertices.
+inline constexpr double kBoxTrims[] = {0.0, 0.02, 0.05, 0.1};
 // The share of the simplifier's feature penalty that chain levels use (see buildLodChain).
 inline constexpr double kChainFeaturePenaltyShare = 0.5;
 // Where the model is this many pixels high, a tetrahedron per component replaces its box.
@@ -119,11 +124,56 @@ void replaceByProxies(MeshType& m, const std::vector<ProxyBox>& boxes, const App
         append(m, b.box, b.part, b.color);
 }
 
+// The box of component `c`'s surface without its outermost `share` of area at either end of
+// each axis. A pin or a leg sticking out of a body holds little of the area, and the box of
+// the rest stands closer for the body: the box of all its vertices is off by the pin's length
+// over the whole bottom face. Each face counts as its corners and its centroid, a quarter of
+// its area each. share 0, or nothing left: the box of its vertices.
+template <class MeshType>
+vcg::Box3d trimmedBox(const Component<MeshType>& c, double share)
+{
+    if (!(share > 0))
+        return c.box;
+    struct Weighted {
+        vcg::Point3d p;
+        double w;
+    };
+    std::vector<Weighted> points;
+    points.reserve(4 * c.faces.size());
+    double total = 0.0;
+    for (const auto* f : c.faces) {
+        const vcg::Point3d a = vcg::Point3d::Construct(f->cP(0)), b = vcg::Point3d::Construct(f->cP(1)),
+                           d = vcg::Point3d::Construct(f->cP(2));
+        const double w = 0.125 * ((b - a) ^ (d - a)).Norm();
+        for (const vcg::Point3d& p : {a, b, d, (a + b + d) / 3.0})
+            points.push_back({p, w});
+        total += 4.0 * w;
+    }
+    if (!(total > 0))
+        return c.box;
+    vcg::Box3d box;
+    for (int axis = 0; axis < 3; ++axis) {
+        std::sort(points.begin(), points.end(),
+                  [axis](const Weighted& x, const Weighted& y) { return x.p[axis] < y.p[axis]; });
+        double below = 0.0;
+        std::size_t lo = 0;
+        while (lo + 1 < points.size() && below + points[lo].w <= share * total)
+            below += points[lo++].w;
+        double above = 0.0;
+        std::size_t hi = points.size() - 1;
+        while (hi > lo && above + points[hi].w <= share * total)
+            above += points[hi--].w;
+        box.min[axis] = points[lo].p[axis];
+        box.max[axis] = points[hi].p[axis];
+    }
+    return box;
+}
+
 // Replaces `m` by one closed shape per connected component at least `minSize` large, made
-// from the component's box and keeping its part and colour; the smaller ones are left out,
-// counted in `stats`.
+// from the component's box (trimmed by `trim`, see trimmedBox) and keeping its part and
+// colour; the smaller ones are left out, counted in `stats`.
 template <class MeshType, class AppendShape>
-void proxyPerComponent(MeshType& m, double minSize, SimplifyStats& stats, const AppendShape& append)
+void proxyPerComponent(MeshType& m, double minSize, SimplifyStats& stats, const AppendShape& append, double trim = 0.0)
 {
     std::vector<ProxyBox> boxes;
     vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
@@ -133,7 +183,7 @@ void proxyPerComponent(MeshType& m, double minSize, SimplifyStats& stats, const 
             stats.largestRemovedComponent = std::max(stats.largestRemovedComponent, c.size());
             continue;
         }
-        boxes.push_back(proxyBoxOf(m, c, c.box));
+        boxes.push_back(proxyBoxOf(m, c, trimmedBox(c, trim)));
     }
     replaceByProxies(m, boxes, append);
 }
@@ -343,18 +393,33 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     struct BoxProxy {
         MeshType* mesh = nullptr;
         Measures measured;
+        double trim = 0.0;  // the share of area left out at each end (trimmedBox)
     } boxProxy;
+    // The box per component is tried as the box of its vertices and trimmed of thin
+    // protrusions (kBoxTrims); the one with the smallest measured error is kept.
     auto takeBox = [&] {
         boxProxy.mesh = &newScratch();
+        MeshType& collapsed = newScratch();
+        MeshType& candidate = newScratch();
         stats.errorBound = detail::errorBudgetAt(dProxy, view);
-        together(measurePending, [&] {
-            pieces.appendTo(*boxProxy.mesh);
-            detail::proxyPerComponent(*boxProxy.mesh, stats.errorBound, stats, appendBox<MeshType>);
-        });
+        together(measurePending, [&] { pieces.appendTo(collapsed); });
         settlePending();
         if (progress)
             progress(100 * plannedLevels / (plannedLevels + 1), "Measuring the box proxy");
-        boxProxy.measured = measure(*boxProxy.mesh);
+        for (double trim : kBoxTrims) {
+            SimplifyStats removed;
+            detail::copyWithParts(candidate, collapsed);
+            detail::proxyPerComponent(candidate, stats.errorBound, removed, appendBox<MeshType>, trim);
+            const Measures measured = measure(candidate);
+            if (trim == kBoxTrims[0] || measured.distance.max() < boxProxy.measured.distance.max()) {
+                boxProxy.trim = trim;
+                boxProxy.measured = measured;
+            }
+        }
+        detail::copyWithParts(*boxProxy.mesh, collapsed);
+        detail::proxyPerComponent(*boxProxy.mesh, stats.errorBound, stats, appendBox<MeshType>, boxProxy.trim);
+        collapsed.Clear();
+        candidate.Clear();
     };
     auto boxServes = [&](double d) {
         return boxProxy.mesh->fn == 0 || boxProxy.measured.distance.max() <= detail::errorBudgetAt(d, view) ||
@@ -400,7 +465,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // where the model is a couple of pixels high, the tetrahedron inscribed in each box (the
     // fewest triangles that still enclose a volume), and then one for the whole model. Each
     // is drawn from where its measured error is within the pixel error, like any level.
-    auto addProxy = [&](const std::string& what, int facesEach, const Measures* measured) {
+    auto addProxy = [&](const std::string& what, int facesEach, const Measures* measured, const std::string& how = "") {
         if (working.fn == 0 || working.fn >= result.levels.back().faces)
             return;
         if (progress)
@@ -409,12 +474,16 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         detail::copyWithParts(proxy, working);
         stats.facesAfter = proxy.fn;
         stats.relaxed.push_back(what + " proxy: one " + what + " per connected component (" +
-                                std::to_string(proxy.fn / facesEach) + ")");
+                                std::to_string(proxy.fn / facesEach) + ")" + how);
         addLevel(proxy, stats, measured ? *measured : measure(proxy));
     };
     detail::copyWithParts(working, *boxProxy.mesh);
     boxProxy.mesh->Clear();
-    addProxy("box", 12, &boxProxy.measured);
+    const std::string trimmed =
+        boxProxy.trim > 0 ? ", each without the outermost " + std::to_string(int(std::lround(100 * boxProxy.trim))) +
+                                " % of its area at either end of each axis (a pin or leg sticking out)"
+                          : "";
+    addProxy("box", 12, &boxProxy.measured, trimmed);
     if (options.proxyPixels > kTetrahedronPixels) {
         stats.relaxed.clear();
         stats.errorBound = detail::errorBudgetAt(dTetrahedron, view);

@@ -245,3 +245,43 @@ TEST(LodChain, LargePiecesStartAsTwoHalvesWithTheSameChainOnTwoThreads)
             << "level " << i << " (" << ma.fn << " faces)";
     }
 }
+
+// A plate with a thin blade welded to one of its bottom corners, sticking 20 below it: one
+// connected component. Its box proxy may leave the blade out (it holds 0.1 % of the area),
+// the box of its vertices may not.
+TEST(LodChain, ATrimmedBoxLeavesOutAThinBladeStickingOut)
+{
+    CadBuilder b;
+    const int first = stripPlate(b, 40, 40, 4, 8);
+    const int corner = first + 2 * 4;  // bottom outline point 4: (20, 0, 0)
+    const int side = b.addPoint(20.5, 0, 0);
+    const int tip = b.addPoint(20.25, 0, -20);
+    b.addTriangle(corner, tip, side);
+    TestMesh m;
+    b.build(m);
+    vcg::tri::UpdateTopology<TestMesh>::VertexFace(m);
+    const auto components = connectedComponents(m);
+    ASSERT_EQ(components.size(), 1u);
+
+    const vcg::Box3d all = detail::trimmedBox(components[0], 0.0);
+    EXPECT_DOUBLE_EQ(all.min[2], -20.0);
+    EXPECT_DOUBLE_EQ(all.max[2], 4.0);
+
+    for (double share : {0.02, 0.05}) {
+        const vcg::Box3d trimmed = detail::trimmedBox(components[0], share);
+        EXPECT_DOUBLE_EQ(trimmed.min[2], 0.0) << share;  // the plate's bottom, not the blade's tip
+        EXPECT_DOUBLE_EQ(trimmed.max[2], 4.0) << share;
+        EXPECT_DOUBLE_EQ(trimmed.min[0], 0.0) << share;  // the plate's sides hold their place
+        EXPECT_DOUBLE_EQ(trimmed.max[0], 40.0) << share;
+        EXPECT_DOUBLE_EQ(trimmed.min[1], 0.0) << share;
+        EXPECT_DOUBLE_EQ(trimmed.max[1], 40.0) << share;
+    }
+    // A tenth of the area at each end cuts into the plate's sides too (its edges at x = 0 and
+    // 40 hold 4 % each, with the corners of the top and bottom strips), which is why the chain
+    // measures every trim and keeps the best; top and bottom, 42 % each, hold.
+    const vcg::Box3d tenth = detail::trimmedBox(components[0], 0.1);
+    EXPECT_DOUBLE_EQ(tenth.min[2], 0.0);
+    EXPECT_DOUBLE_EQ(tenth.max[2], 4.0);
+    EXPECT_GT(tenth.min[0], 0.0);
+    EXPECT_LT(tenth.max[0], 40.0);
+}
