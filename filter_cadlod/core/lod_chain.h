@@ -19,11 +19,12 @@
 // once); the ratio between the measured and the requested error steers the budgets from
 // the level after next, so a collapse error that underestimates the distance a viewer sees
 // is corrected level by level. Where the model is `proxyPixels` high, a proxy is made:
-// one axis-aligned box per remaining connected component (a box per part). Collapse
-// levels go on beyond it only while the box's measured error is still above the budget and
-// they are heavier than the box (a jack's deep socket keeps its box far off). Where the
-// model is a couple of pixels high, the tetrahedron inscribed in each box follows, and last
-// one tetrahedron for the whole model.
+// one axis-aligned box per remaining connected component (a box per part): the box of its
+// vertices or of its surface without what sticks out (a pin, a leg), whichever measures
+// closer. Collapse levels go on beyond it only while the box's measured error is still
+// above the budget and they are heavier than the box (a jack's deep socket keeps its box
+// far off). Where the model is a couple of pixels high, the tetrahedron inscribed in each
+// box follows, and last one tetrahedron for the whole model.
 //
 // Every level's range comes from its measured error (lod_plan.h): it is drawn from where
 // that error projects to the pixel error, until the next level's does. The last level is
