@@ -170,23 +170,43 @@ vcg::Box3d trimmedBox(const Component<MeshType>& c, double share)
     return box;
 }
 
-// Replaces `m` by one closed shape per connected component at least `minSize` large, made
-// from the component's box (trimmed by `trim`, see trimmedBox) and keeping its part and
-// colour; the smaller ones are left out, counted in `stats`.
-template <class MeshType, class AppendShape>
-void proxyPerComponent(MeshType& m, double minSize, SimplifyStats& stats, const AppendShape& append, double trim = 0.0)
+// The connected components of `m` at least `minSize` large; the smaller ones, which no proxy
+// stands for, are counted in `stats`.
+template <class MeshType>
+std::vector<Component<MeshType>> componentsToKeep(MeshType& m, double minSize, SimplifyStats& stats)
 {
-    std::vector<ProxyBox> boxes;
     vcg::tri::UpdateTopology<MeshType>::VertexFace(m);
-    for (const Component<MeshType>& c : connectedComponents(m)) {
+    std::vector<Component<MeshType>> kept;
+    for (Component<MeshType>& c : connectedComponents(m)) {
         if (c.size() < minSize) {
             ++stats.removedComponents;
             stats.largestRemovedComponent = std::max(stats.largestRemovedComponent, c.size());
             continue;
         }
-        boxes.push_back(proxyBoxOf(m, c, trimmedBox(c, trim)));
+        kept.push_back(std::move(c));
     }
-    replaceByProxies(m, boxes, append);
+    return kept;
+}
+
+// One box per component of `m` in `kept`, trimmed by `trim` (see trimmedBox), with the
+// component's part and colour.
+template <class MeshType>
+std::vector<ProxyBox> proxyBoxes(MeshType& m, const std::vector<Component<MeshType>>& kept, double trim)
+{
+    std::vector<ProxyBox> boxes;
+    for (const Component<MeshType>& c : kept)
+        boxes.push_back(proxyBoxOf(m, c, trimmedBox(c, trim)));
+    return boxes;
+}
+
+// Replaces `m` by one closed shape per connected component at least `minSize` large, made
+// from the component's box and keeping its part and colour; the smaller ones are left out,
+// counted in `stats`.
+template <class MeshType, class AppendShape>
+void proxyPerComponent(MeshType& m, double minSize, SimplifyStats& stats, const AppendShape& append)
+{
+    const std::vector<Component<MeshType>> kept = componentsToKeep(m, minSize, stats);
+    replaceByProxies(m, proxyBoxes(m, kept, 0.0), append);
 }
 
 // The box of all of a model's live vertices, with the part and colour of its largest
@@ -400,26 +420,25 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // protrusions (kBoxTrims); the one with the smallest measured error is kept.
     auto takeBox = [&] {
         boxProxy.mesh = &newScratch();
-        MeshType& collapsed = newScratch();
         MeshType& candidate = newScratch();
         stats.errorBound = detail::errorBudgetAt(dProxy, view);
-        together(measurePending, [&] { pieces.appendTo(collapsed); });
+        together(measurePending, [&] { pieces.appendTo(*boxProxy.mesh); });
         settlePending();
         if (progress)
             progress(100 * plannedLevels / (plannedLevels + 1), "Measuring the box proxy");
+        const auto kept = detail::componentsToKeep(*boxProxy.mesh, stats.errorBound, stats);
+        std::vector<detail::ProxyBox> best;
         for (double trim : kBoxTrims) {
-            SimplifyStats removed;
-            detail::copyWithParts(candidate, collapsed);
-            detail::proxyPerComponent(candidate, stats.errorBound, removed, appendBox<MeshType>, trim);
+            std::vector<detail::ProxyBox> boxes = detail::proxyBoxes(*boxProxy.mesh, kept, trim);
+            detail::replaceByProxies(candidate, boxes, appendBox<MeshType>);
             const Measures measured = measure(candidate);
             if (trim == kBoxTrims[0] || measured.distance.max() < boxProxy.measured.distance.max()) {
                 boxProxy.trim = trim;
                 boxProxy.measured = measured;
+                best = std::move(boxes);
             }
         }
-        detail::copyWithParts(*boxProxy.mesh, collapsed);
-        detail::proxyPerComponent(*boxProxy.mesh, stats.errorBound, stats, appendBox<MeshType>, boxProxy.trim);
-        collapsed.Clear();
+        detail::replaceByProxies(*boxProxy.mesh, best, appendBox<MeshType>);
         candidate.Clear();
     };
     auto boxServes = [&](double d) {
