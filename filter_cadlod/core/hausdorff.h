@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <vector>
@@ -114,16 +115,28 @@ public:
         return hint >= 0 ? faces_[std::size_t(hint)] : nullptr;
     }
 
-    // Whether some face lies within `radius` of p, trying `hint` first (then the face found
-    // goes there): true proves that p's distance is at most `radius`.
-    bool within(const vcg::Point3d& p, double radius, std::int64_t& hint) const
+    // Faces found for the points just before: a point is most often near one of them.
+    struct RecentFaces {
+        std::array<std::int64_t, 4> face{-1, -1, -1, -1};
+        std::size_t next = 0;
+        void add(std::int64_t f)
+        {
+            face[next] = f;
+            next = (next + 1) % face.size();
+        }
+    };
+
+    // Whether some face lies within `radius` of p, trying the recent ones first (then the
+    // face found joins them): true proves that p's distance is at most `radius`.
+    bool within(const vcg::Point3d& p, double radius, RecentFaces& recent) const
     {
-        if (hint >= 0 && std::size_t(hint) < faces_.size() && tree_.distance(std::size_t(hint), p) <= radius)
-            return true;
+        for (const std::int64_t f : recent.face)
+            if (f >= 0 && std::size_t(f) < faces_.size() && tree_.distance(std::size_t(f), p) <= radius)
+                return true;
         const std::int64_t i = tree_.anyWithin(p, radius);
         if (i < 0)
             return false;
-        hint = i;
+        recent.add(i);
         return true;
     }
 
@@ -154,7 +167,7 @@ struct DistanceSums {
         sumSquares += d * d;
         ++count;
     }
-    // A distance that counts toward the maximum only (see measurePoints).
+    // A distance that counts toward the maximum only (see raiseMaxByOtherPoints).
     void raiseMax(double d) { max = std::max(max, d); }
     void add(const DistanceSums& o)
     {
@@ -177,6 +190,23 @@ struct HausdorffSamples {
     std::vector<std::size_t> vertexIndex;  // mesh.vert index of points[i], i < vertexIndex.size()
     std::size_t vertexCount = 0;           // mesh.vert.size()
 };
+
+namespace detail {
+
+// The position of (u, v) in [0, 1]² along the Z-order curve, at 16 bits per coordinate.
+inline std::uint32_t mortonOrder(double u, double v)
+{
+    auto spread = [](std::uint32_t x) {
+        x = (x | (x << 8)) & 0x00FF00FFu;
+        x = (x | (x << 4)) & 0x0F0F0F0Fu;
+        x = (x | (x << 2)) & 0x33333333u;
+        return (x | (x << 1)) & 0x55555555u;
+    };
+    auto quantize = [](double t) { return std::uint32_t(std::clamp(t, 0.0, 1.0) * 65535.0); };
+    return spread(quantize(u)) | spread(quantize(v)) << 1;
+}
+
+}  // namespace detail
 
 template <class MeshFrom>
 HausdorffSamples hausdorffSamples(MeshFrom& from, std::size_t faceSamples, unsigned seed, bool everyFace = false)
@@ -203,6 +233,7 @@ HausdorffSamples hausdorffSamples(MeshFrom& from, std::size_t faceSamples, unsig
     struct Sample {
         std::size_t face;
         double u, v;
+        std::uint32_t order;  // along a face: points in a row lie near each other
     };
     std::vector<Sample> picks;
     picks.reserve(total > 0 ? faceSamples : 0);
@@ -218,9 +249,11 @@ HausdorffSamples hausdorffSamples(MeshFrom& from, std::size_t faceSamples, unsig
             u = 1 - u;
             v = 1 - v;
         }
-        picks.push_back({k, u, v});
+        picks.push_back({k, u, v, detail::mortonOrder(u, v)});
     }
-    std::stable_sort(picks.begin(), picks.end(), [](const Sample& x, const Sample& y) { return x.face < y.face; });
+    std::sort(picks.begin(), picks.end(), [](const Sample& x, const Sample& y) {
+        return x.face != y.face ? x.face < y.face : x.order < y.order;
+    });
     points.reserve(points.size() + picks.size());
     for (const Sample& sample : picks) {
         const auto* f = sources[sample.face];
@@ -253,33 +286,53 @@ void splitInHalves(std::size_t begin, std::size_t end, const RunTogether& togeth
     together([&] { splitInHalves(begin, middle, together, task); }, [&] { splitInHalves(middle, end, together, task); });
 }
 
-// Distances of points[begin, end) to `closest`, into `distance` (same indexing). With
-// `meanEvery` > 1 only every meanEvery-th point counts toward the mean and is stored; the
-// others count toward the maximum alone, and one of them is looked up in full only when no
-// face lies within the largest distance found so far (ClosestFace::within). Consecutive
-// points lie near the same face, so most take one triangle test, and the maximum is still
-// exact.
+// Whether points[i] of the range starting at `begin` is one the mean is taken from.
+inline bool countsForMean(std::size_t i, std::size_t begin, std::size_t meanEvery)
+{
+    return (i - begin) % meanEvery == 0;
+}
+
+// The first pass over points[begin, end): distances to `closest` of the points the mean is
+// taken from (every meanEvery-th; all of them with meanEvery 1), looked up in full, into
+// `distance` (same indexing).
 template <class MeshTo>
-DistanceSums measurePoints(const std::vector<vcg::Point3d>& points, std::size_t begin, std::size_t end,
-                           const ClosestFace<MeshTo>& closest, std::vector<double>& distance,
-                           std::size_t meanEvery = 1)
+DistanceSums measureMeanPoints(const std::vector<vcg::Point3d>& points, std::size_t begin, std::size_t end,
+                               const ClosestFace<MeshTo>& closest, std::vector<double>& distance,
+                               std::size_t meanEvery)
 {
     DistanceSums sums;
     std::int64_t hint = -1;
-    for (std::size_t i = begin; i < end; ++i) {
-        const bool forMean = (i - begin) % meanEvery == 0;
-        if (!forMean && closest.within(points[i], sums.max, hint))
-            continue;
+    for (std::size_t i = begin; i < end; i += meanEvery) {
         double d = 0.0;
         closest.find(points[i], d, hint);
-        if (forMean) {
-            distance[i] = d;
-            sums.add(d);
-        } else {
-            sums.raiseMax(d);
-        }
+        distance[i] = d;
+        sums.add(d);
     }
     return sums;
+}
+
+// The second pass: the largest distance of the other points that exceeds `floor` (a
+// distance the first pass found, so the maximum stays exact), or `floor`. A point is looked
+// up in full only when no face lies within the largest distance found so far
+// (ClosestFace::within): consecutive points lie near the same face, so most take one
+// triangle test. Starting from the first pass's largest distance over all the points, and
+// not from zero in each chunk, most of them pass that test.
+template <class MeshTo>
+double raiseMaxByOtherPoints(const std::vector<vcg::Point3d>& points, std::size_t begin, std::size_t end,
+                             const ClosestFace<MeshTo>& closest, std::size_t meanEvery, double floor)
+{
+    double max = floor;
+    typename ClosestFace<MeshTo>::RecentFaces recent;
+    for (std::size_t i = begin; i < end; ++i) {
+        if (countsForMean(i, begin, meanEvery) || closest.within(points[i], max, recent))
+            continue;
+        double d = 0.0;
+        std::int64_t found = -1;
+        closest.find(points[i], d, found);
+        recent.add(found);
+        max = std::max(max, d);
+    }
+    return max;
 }
 
 }  // namespace detail
@@ -291,9 +344,10 @@ DistanceSums measurePoints(const std::vector<vcg::Point3d>& points, std::size_t 
 // points are measured in kHausdorffChunks fixed chunks, split in halves for it to run at
 // once (points far from the other surface take longer to look up, so a few chunks per
 // core keep the cores busy); the sums are added in chunk order, so the figures do not
-// depend on how they ran. `meanEvery` > 1 (detail::measurePoints): the maximum from every
-// point, the mean and RMS from every meanEvery-th (`samples` counts those); then
-// vertexDistances holds only theirs.
+// depend on how they ran. `meanEvery` > 1: the maximum from every point, the mean and RMS
+// from every meanEvery-th (`samples` counts those), which are looked up first, in full
+// (detail::measureMeanPoints); then vertexDistances holds only theirs. The others are looked
+// up only where they could raise the maximum (detail::raiseMaxByOtherPoints).
 template <class MeshTo>
 HausdorffStats distancesToSurface(const HausdorffSamples& samples, const detail::ClosestFace<MeshTo>& closest,
                                   std::vector<double>* vertexDistances = nullptr, const RunTogether& together = {},
@@ -308,18 +362,30 @@ HausdorffStats distancesToSurface(const HausdorffSamples& samples, const detail:
 
     const std::vector<vcg::Point3d>& points = samples.points;
     std::vector<double> distance(points.size(), 0.0);
+    const std::size_t chunks = together ? kHausdorffChunks : 1;
+    auto chunkBegin = [&](std::size_t c) { return points.size() * c / chunks; };
+    auto forEachChunk = [&](const auto& task) {
+        if (together)
+            detail::splitInHalves(0, chunks, together, task);
+        else
+            task(0);
+    };
+    std::array<detail::DistanceSums, kHausdorffChunks> chunkSums;
+    forEachChunk([&](std::size_t c) {
+        chunkSums[c] = detail::measureMeanPoints(points, chunkBegin(c), chunkBegin(c + 1), closest, distance, meanEvery);
+    });
     detail::DistanceSums sums;
-    if (together) {
-        std::array<detail::DistanceSums, kHausdorffChunks> chunk;
-        detail::splitInHalves(0, kHausdorffChunks, together, [&](std::size_t c) {
-            chunk[c] = detail::measurePoints(points, points.size() * c / kHausdorffChunks,
-                                             points.size() * (c + 1) / kHausdorffChunks, closest, distance,
-                                             meanEvery);
+    for (std::size_t c = 0; c < chunks; ++c)
+        sums.add(chunkSums[c]);
+    if (meanEvery > 1) {
+        std::array<double, kHausdorffChunks> chunkMax{};
+        const double floor = sums.max;
+        forEachChunk([&](std::size_t c) {
+            chunkMax[c] =
+                detail::raiseMaxByOtherPoints(points, chunkBegin(c), chunkBegin(c + 1), closest, meanEvery, floor);
         });
-        for (const auto& c : chunk)
-            sums.add(c);
-    } else {
-        sums = detail::measurePoints(points, 0, points.size(), closest, distance, meanEvery);
+        for (std::size_t c = 0; c < chunks; ++c)
+            sums.raiseMax(chunkMax[c]);
     }
     if (vertexDistances)
         for (std::size_t i = 0; i < samples.vertexIndex.size(); ++i)

@@ -143,12 +143,14 @@ TEST(ClosestFace, WithinAgreesWithBruteForce)
     const vcg::Point3d c = vcg::Point3d::Construct(m.bbox.Center());
     std::uniform_real_distribution<double> spread(-m.bbox.Diag(), m.bbox.Diag());
     int inside = 0, outside = 0;
+    // The faces found for earlier points and radii are tried first: they must not let a
+    // smaller radius pass.
+    detail::ClosestFace<TestMesh>::RecentFaces recent;
     for (int k = 0; k < 400; ++k) {
         const vcg::Point3d p = c + vcg::Point3d(spread(rng), spread(rng), spread(rng));
         const double d = bruteForce(m, p);
-        for (const double radius : {0.5 * d, 0.999 * d, 1.001 * d, 2.0 * d}) {
-            std::int64_t hint = -1;
-            const bool within = closest.within(p, radius, hint);
+        for (const double radius : {2.0 * d, 1.001 * d, 0.999 * d, 0.5 * d}) {
+            const bool within = closest.within(p, radius, recent);
             EXPECT_EQ(within, radius >= d) << "point " << k << " radius " << radius << " distance " << d;
             (within ? inside : outside)++;
         }
