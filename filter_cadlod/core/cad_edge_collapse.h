@@ -42,6 +42,7 @@
 #include "collapse_edge.h"
 #include "collapse_heap.h"
 #include "compactness.h"
+#include "far_field.h"
 #include "feature_edges.h"
 #include "input_surface.h"
 #include "simplify_params.h"
@@ -180,6 +181,14 @@ struct CollapseContext : public vcg::BaseParameterClass {
     // break is (0: refused). Null: no check. It gives way in the far field, once the mesh is
     // down to facingFloor faces.
     std::shared_ptr<InputSurface> surface;
+    // Once started (far_field.h), every operation is ranked by the largest distance it opens
+    // (farFieldPriority). Null: the session never reaches the far field.
+    std::shared_ptr<FarFieldDistances<MeshType>> farField;
+    int farFieldFloor = 0;  // the live faces where the far field starts
+    bool inFarField() const { return farField && farField->started(); }
+    // The priority of an operation in the far field: the distance it opens, squared, in
+    // diagonals.
+    double farFieldPriority(double distance) const { return distance * distance / (diagonal * diagonal); }
     double facingPenalty = 0.0;
     int facingFloor = 0;
     bool facingGaveWay = false;      // a collapse ran unchecked below facingFloor
@@ -384,7 +393,11 @@ public:
         if (v0->IsUserBit(ctx.bits.boundary))
             v1->SetUserBit(ctx.bits.boundary);
         ctx.quadrics.merge(v0, v1);
+        if (ctx.inFarField())
+            ctx.farField->takePointsAround(v0, v1);
         const CollapseCount deleted = collapseEdge(v0, v1, target_);
+        if (ctx.inFarField())
+            ctx.farField->dealPointsAround(v1);
         *ctx.faceCounter -= deleted.faces;
         *ctx.vertexCounter -= deleted.vertices;
         for (VertexType* x : featureApex)
@@ -753,6 +766,8 @@ private:
         VertexType* v1 = this->pos.V(1);
         if (v0->IsUserBit(ctx.bits.locked) || v1->IsUserBit(ctx.bits.locked))
             return std::numeric_limits<ScalarType>::max();
+        if (ctx.inFarField())
+            return 0;  // the distance it opens is found when it is evaluated
         const Quadric q = mergedQuadric(ctx);
         Candidate cand[kMaxCandidates];
         const int count = candidates(ctx, q, vcg::Point3d::Construct(v0->cP()), vcg::Point3d::Construct(v1->cP()),
@@ -880,6 +895,20 @@ private:
         const double shape = qualityThr > 0 ? std::clamp(bestScore.meanCompactness / qualityThr, 0.02, 1.0) : 1.0;
         this->_priority =
             priorityOf(ctx, cand[best].ranked, ctx.quadrics.cappedArea(v0, v1), shape);
+        if (ctx.inFarField()) {
+            const double opened = farFieldDistance(ctx, v0, v1, cand[best].p);
+            const double mean = double(error_);
+            this->_priority =
+                ScalarType(ctx.farFieldPriority(std::sqrt(opened * opened + kFarFieldMeanShare * mean * mean)));
+        }
+    }
+
+    // The largest distance the collapse to p opens (far_field.h): from the input's points
+    // of the faces it changes to the faces it makes, and from p to the input surface.
+    static double farFieldDistance(const Context& ctx, VertexType* v0, VertexType* v1, const vcg::Point3d& p)
+    {
+        const double forward = ctx.farField->collapseError(v0, v1, p, ctx.ring);
+        return ctx.surface ? std::max(forward, ctx.surface->distance(p)) : forward;
     }
 
     vcg::Point3<ScalarType> target_;

@@ -71,12 +71,15 @@ public:
             vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
             for (VertexType* v : vertices)
                 weight += ctx.quadrics.area(v) / 3.0;
-            const double distance = rest.farthest(vertices, i, c.size());
+            // In the far field a removal is ranked by the gap it leaves, as collapses are by
+            // the distance they open there (far_field.h).
+            const double distance = rest.farthest(vertices, i, ctx.inFarField() ? 0.0 : c.size());
             if (ctx.maxErrorAbs > 0 && distance > ctx.maxErrorAbs)
                 continue;
             const double cost = penalty * weight * distance * distance;
-            heap.push_back(HeapElem(new ComponentRemoval(std::move(vertices), c.size(), distance, c.name,
-                                                         ScalarType(ctx.priority(cost, weight, 1.0)))));
+            const double priority = ctx.inFarField() ? ctx.farFieldPriority(distance) : ctx.priority(cost, weight, 1.0);
+            heap.push_back(
+                HeapElem(new ComponentRemoval(std::move(vertices), c.size(), distance, c.name, ScalarType(priority))));
         }
     }
 
@@ -94,6 +97,9 @@ public:
         VertexType* seed = liveVertex();
         Component<MeshType> c;
         c.faces = facesConnectedTo(m, seed);
+        if (ctx.inFarField())
+            for (const FaceType* f : c.faces)
+                ctx.farField->dropPointsOf(f);
         removeComponent(m, c);
         ++ctx.stats->removedComponents;
         ctx.stats->largestRemovedComponent = std::max(ctx.stats->largestRemovedComponent, size_);

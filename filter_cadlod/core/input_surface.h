@@ -72,6 +72,13 @@ public:
                              [&](std::size_t k) { return sameSide(k, normal); }) >= 0;
     }
 
+    // The distance from p to the input surface.
+    double distance(const vcg::Point3d& p) const
+    {
+        double d = 0;
+        return tree_.closest(p, maxDistance_, d) >= 0 ? d : 0.0;
+    }
+
     // Face `face` (new: a tunnel's cap) lies where face `like` does: its search starts there.
     void adopt(std::size_t face, std::size_t like)
     {

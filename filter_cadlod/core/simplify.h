@@ -25,8 +25,10 @@
 
 namespace cadlod {
 
-// Below this share of its input faces a mesh is in the far field, where the input-surface
-// check gives way (issue 13): the paper's levels and issue 14's reductions stop at 95 %.
+// Below this share of its input faces a mesh is in the far field (issue 13), where the
+// input-surface check gives way and, toward a face target, operations are ranked by the
+// largest distance they open (far_field.h): the paper's levels and issue 14's reductions
+// stop at 95 %.
 inline constexpr double kFacingFarField = 0.05;
 // A collapse that turns a face away from the input surface is priced at this many times the
 // feature penalty. A broken feature's error is in the quadric (its constraint planes); a
@@ -257,6 +259,10 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
         ctx.facingFloor = int(kFacingFarField * m.fn);
         ctx.faceCount = &m.fn;
     }
+    // A face target in the far field: the input's points are kept for it (far_field.h).
+    ctx.farFieldFloor = int(kFacingFarField * m.fn);
+    if (stats.targetFaces > 0 && stats.targetFaces < ctx.farFieldFloor)
+        ctx.farField = std::make_shared<FarFieldDistances<MeshType>>(m);
     ctx.clearRingChanges(m);
     ctx.faceCounter = &m.fn;
     ctx.vertexCounter = &m.vn;
@@ -319,8 +325,9 @@ bool runHeap(vcg::LocalOptimization<MeshType>& session)
 //      small component whole (component_removal.h): they run when they are cheaper;
 //      so is a collapse that turns a face away from the input surface near it
 //      (input_surface.h), which a viewer sees lit as the wrong side, at kFacingOverFeature
-//      times that penalty; in the far field (the
-//      mesh down to kFacingFarField of its faces) that check gives way, logged; and so is
+//      times that penalty; in the far field (the mesh down to kFacingFarField of its
+//      faces) that check gives way, and toward a face target every operation is ranked by
+//      the largest distance it opens instead (far_field.h), both logged; and so is
 //      cutting a tunnel whose rim has shrunk to three edges, where the link condition
 //      refuses every collapse (tunnel_cut.h), logged;
 //   2. the shape guards (minCompactness, no free slivers).
@@ -344,8 +351,10 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
         heapMake(session.h);
     };
     fillHeap();
+    // A session bound for the far field first runs down to where it starts (far_field.h).
+    const bool farFieldAhead = ctx.farField && !ctx.farField->started() && stats.targetFaces > 0;
     if (stats.targetFaces > 0)
-        session.SetTargetSimplices(stats.targetFaces);
+        session.SetTargetSimplices(farFieldAhead ? std::max(stats.targetFaces, ctx.farFieldFloor) : stats.targetFaces);
     // Progress counts from the faces the simplification started with (a first phase,
     // collapse_halves.h, may have made part of the removal).
     const int toRemove = std::max(1, std::max(m.fn, stats.facesBefore) - stats.targetFaces);
@@ -355,6 +364,15 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
     int collapsesSinceInit = 0;
     const int tunnelsBefore = stats.closedTunnels;
     while (m.fn > stats.targetFaces) {
+        if (farFieldAhead && !ctx.farField->started() && m.fn <= ctx.farFieldFloor) {
+            ctx.farField->start(m);
+            stats.relaxed.push_back("far field from " + std::to_string(m.fn) +
+                                    " faces: collapses and removals ranked by the largest distance they open");
+            session.SetTargetSimplices(stats.targetFaces);
+            collapsesSinceInit = 0;
+            fillHeap();
+            continue;
+        }
         const bool heapLeft = detail::runHeap(session);
         stats.collapses += session.nPerformedOps;
         collapsesSinceInit += session.nPerformedOps;

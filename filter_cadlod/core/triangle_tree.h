@@ -176,6 +176,35 @@ public:
         return -1;
     }
 
+    // Squared distance from p to the triangle (Ericson, Real-Time Collision Detection, 5.1.5).
+    static double triangleDistance2(const Triangle& t, const vcg::Point3d& p)
+    {
+        const vcg::Point3d &a = t[0], &b = t[1], &c = t[2];
+        const vcg::Point3d ab = b - a, ac = c - a, ap = p - a;
+        const double d1 = ab * ap, d2 = ac * ap;
+        if (d1 <= 0 && d2 <= 0)
+            return ap.SquaredNorm();
+        const vcg::Point3d bp = p - b;
+        const double d3 = ab * bp, d4 = ac * bp;
+        if (d3 >= 0 && d4 <= d3)
+            return bp.SquaredNorm();
+        const double vc = d1 * d4 - d3 * d2;
+        if (vc <= 0 && d1 >= 0 && d3 <= 0)
+            return (ap - ab * (d1 / (d1 - d3))).SquaredNorm();
+        const vcg::Point3d cp = p - c;
+        const double d5 = ab * cp, d6 = ac * cp;
+        if (d6 >= 0 && d5 <= d6)
+            return cp.SquaredNorm();
+        const double vb = d5 * d2 - d1 * d6;
+        if (vb <= 0 && d2 >= 0 && d6 <= 0)
+            return (ap - ac * (d2 / (d2 - d6))).SquaredNorm();
+        const double va = d3 * d6 - d5 * d4;
+        if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+            return (bp - (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))).SquaredNorm();
+        const double denom = 1.0 / (va + vb + vc);
+        return (ap - ab * (vb * denom) - ac * (vc * denom)).SquaredNorm();
+    }
+
 private:
     static constexpr std::uint32_t kLeafSize = 8;
 
@@ -225,35 +254,6 @@ private:
             d2 += d * d;
         }
         return d2;
-    }
-
-    // Squared distance from p to the triangle (Ericson, Real-Time Collision Detection, 5.1.5).
-    static double triangleDistance2(const Triangle& t, const vcg::Point3d& p)
-    {
-        const vcg::Point3d &a = t[0], &b = t[1], &c = t[2];
-        const vcg::Point3d ab = b - a, ac = c - a, ap = p - a;
-        const double d1 = ab * ap, d2 = ac * ap;
-        if (d1 <= 0 && d2 <= 0)
-            return ap.SquaredNorm();
-        const vcg::Point3d bp = p - b;
-        const double d3 = ab * bp, d4 = ac * bp;
-        if (d3 >= 0 && d4 <= d3)
-            return bp.SquaredNorm();
-        const double vc = d1 * d4 - d3 * d2;
-        if (vc <= 0 && d1 >= 0 && d3 <= 0)
-            return (ap - ab * (d1 / (d1 - d3))).SquaredNorm();
-        const vcg::Point3d cp = p - c;
-        const double d5 = ab * cp, d6 = ac * cp;
-        if (d6 >= 0 && d5 <= d6)
-            return cp.SquaredNorm();
-        const double vb = d5 * d2 - d1 * d6;
-        if (vb <= 0 && d2 >= 0 && d6 <= 0)
-            return (ap - ac * (d2 / (d2 - d6))).SquaredNorm();
-        const double va = d3 * d6 - d5 * d4;
-        if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-            return (bp - (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))).SquaredNorm();
-        const double denom = 1.0 / (va + vb + vc);
-        return (ap - ab * (vb * denom) - ac * (vc * denom)).SquaredNorm();
     }
 
     std::vector<vcg::Point3f> vertices_;

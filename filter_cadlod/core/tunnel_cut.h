@@ -132,7 +132,8 @@ public:
             const double weight =
                 (ctx.quadrics.cappedArea(a) + ctx.quadrics.cappedArea(b) + ctx.quadrics.cappedArea(c)) / 3.0;
             const double cost = std::max(1.0, ctx.params.featurePenalty) * weight * loop.inradius * loop.inradius;
-            const auto priority = ScalarType(ctx.priority(cost, weight, 1.0));
+            const auto priority = ScalarType(ctx.inFarField() ? ctx.farFieldPriority(loop.inradius)
+                                                               : ctx.priority(cost, weight, 1.0));
             if (!best || priority < bestPriority) {
                 best = c;
                 bestPriority = priority;

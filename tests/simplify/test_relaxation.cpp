@@ -139,6 +139,38 @@ TEST(SimplifyRelaxation, APartStandingOffTheRestCostsItsDistanceToRemove)
     EXPECT_LT(h.max(), 4.0);
 }
 
+// In the far field operations are ranked by the largest distance they open (far_field.h).
+// A finely tessellated small cube floats 0.5 above a big one. At 12 faces one of them must
+// give way: removing the small cube opens 1.5 (its top's height over the big one),
+// squeezing the big cube into a tetrahedron opens 5.7 (a corner's distance to the cut).
+// Ranked by the quadrics the big cube went (Hausdorff 5.7): the small cube's many faces
+// weigh more than the few planes a corner of the big one stands for.
+TEST(SimplifyRelaxation, InTheFarFieldTheOperationOpeningTheSmallerDistanceGoesFirst)
+{
+    CadBuilder b;
+    b.currentPart = 0;
+    stripPlate(b, 10, 10, 10, 8);
+    b.currentPart = 1;
+    b.translate(stripPlate(b, 1, 1, 1, 64), 4.5, 4.5, 10.5);
+    TestMesh input, m;
+    b.build(input, true);
+    copyMesh(m, input);
+    SimplifyParams p;
+    p.targetFaces = 12;
+    const SimplifyStats s = simplify(m, p);
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_LE(m.fn, 12);
+    EXPECT_EQ(s.removedComponents, 1);
+    bool logged = false;
+    for (const std::string& line : s.relaxed)
+        logged |= line.find("far field from") != std::string::npos;
+    EXPECT_TRUE(logged);
+    for (const vcg::Point3d corner : {vcg::Point3d(0, 0, 0), vcg::Point3d(10, 10, 10), vcg::Point3d(10, 0, 10)})
+        EXPECT_LT(distanceToSurface(m, corner), 0.01) << "the big cube lost a corner";
+    const SymmetricHausdorff h = symmetricHausdorff(input, m, 20000);
+    EXPECT_LT(h.max(), 1.6);
+}
+
 // A max error forbids removing components larger than it.
 TEST(SimplifyRelaxation, MaxErrorKeepsComponentsLargerThanIt)
 {
