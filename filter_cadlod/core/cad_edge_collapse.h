@@ -179,19 +179,18 @@ struct CollapseContext : public vcg::BaseParameterClass {
     // Collapses about to run are checked against the input surface (input_surface.h): one
     // that turns a face away from it is ranked at facingPenalty times its error, as a feature
     // break is (0: refused). Null: no check. It gives way in the far field, once the mesh is
-    // down to facingFloor faces.
+    // down to farFieldFloor faces.
     std::shared_ptr<InputSurface> surface;
+    int farFieldFloor = 0;  // the live faces where the far field starts
     // Once started (far_field.h), every operation is ranked by the largest distance it opens
     // (farFieldPriority). Null: the session never reaches the far field.
     std::shared_ptr<FarFieldDistances<MeshType>> farField;
-    int farFieldFloor = 0;  // the live faces where the far field starts
     bool inFarField() const { return farField && farField->started(); }
     // The priority of an operation in the far field: the distance it opens, squared, in
     // diagonals.
     double farFieldPriority(double distance) const { return distance * distance / (diagonal * diagonal); }
     double facingPenalty = 0.0;
-    int facingFloor = 0;
-    bool facingGaveWay = false;      // a collapse ran unchecked below facingFloor
+    bool facingGaveWay = false;      // a collapse ran unchecked below farFieldFloor
     const int* faceCount = nullptr;  // the mesh's live faces (m.fn)
     // Where executed collapses count what they delete: the mesh's own counts (m.fn, m.vn),
     // or a session's own when two sessions collapse the halves of one mesh at once.
@@ -365,7 +364,7 @@ public:
             return false;
         }
         if (ctx.surface && !turnsAway_ && !free_) {
-            if (*ctx.faceCount <= ctx.facingFloor)
+            if (*ctx.faceCount <= ctx.farFieldFloor)
                 ctx.facingGaveWay = true;
             else if (!newFacesFaceTheInput(ctx))
                 return offEdge_ ? retryOnTheEdge(ctx) : priceTurningAway(ctx);
@@ -893,13 +892,13 @@ private:
             return reject(stats.rejectedError);
         const double qualityThr = ctx.params.qualityThreshold;
         const double shape = qualityThr > 0 ? std::clamp(bestScore.meanCompactness / qualityThr, 0.02, 1.0) : 1.0;
-        this->_priority =
-            priorityOf(ctx, cand[best].ranked, ctx.quadrics.cappedArea(v0, v1), shape);
         if (ctx.inFarField()) {
             const double opened = farFieldDistance(ctx, v0, v1, cand[best].p);
             const double mean = double(error_);
             this->_priority =
                 ScalarType(ctx.farFieldPriority(std::sqrt(opened * opened + kFarFieldMeanShare * mean * mean)));
+        } else {
+            this->_priority = priorityOf(ctx, cand[best].ranked, ctx.quadrics.cappedArea(v0, v1), shape);
         }
     }
 

@@ -18,6 +18,7 @@
 // removed component's points go with it (its gap is the distance they were ranked at).
 #pragma once
 
+#include "hausdorff.h"
 #include "triangle_tree.h"
 
 #include <vcg/space/point3.h>
@@ -62,20 +63,14 @@ public:
     {
         faceBase_ = m.face.empty() ? nullptr : &m.face[0];
         pointsOf_.assign(m.face.size(), {});
-        std::vector<FaceType*> live;
-        for (FaceType& f : m.face)
-            if (!f.IsD())
-                live.push_back(&f);
         started_ = true;
-        if (live.empty())
+        const detail::ClosestFace<MeshType> closest(m);
+        if (closest.empty())
             return;
-        const TriangleTree tree = TriangleTree::of(m, live);
-        const double reach = 4 * std::max(1e-30, boxDiagonal(m)) + 1;
         for (std::uint32_t i = 0; i < points_.size(); ++i) {
             double d = 0;
-            const std::int64_t k = tree.closest(points_[i], reach, d);
-            if (k >= 0)
-                pointsOf_[index(live[std::size_t(k)])].push_back(i);
+            if (const FaceType* f = closest.find(points_[i], d))
+                pointsOf_[index(f)].push_back(i);
         }
     }
 
@@ -162,15 +157,6 @@ private:
             for (const std::uint32_t i : pointsOf_[f])
                 visit(i);
         });
-    }
-
-    static double boxDiagonal(const MeshType& m)
-    {
-        vcg::Box3d box;
-        for (const VertexType& v : m.vert)
-            if (!v.IsD())
-                box.Add(vcg::Point3d::Construct(v.cP()));
-        return box.IsNull() ? 0.0 : box.Diag();
     }
 
     std::vector<vcg::Point3d> points_;

@@ -253,14 +253,13 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     weights.areaShare = params.largeFaceWeight;
     ctx.quadrics.init(m, weights, [&](FaceType& f, int j) { return f.IsUserBit(ctx.bits.edge[j]); });
     ctx.storeInputNormals(m);
+    ctx.farFieldFloor = int(kFacingFarField * m.fn);
     if (params.normalCheck && params.facingCheck) {
         ctx.surface = std::make_shared<InputSurface>(m, ctx.diagonal);
         ctx.facingPenalty = kFacingOverFeature * params.featurePenalty;
-        ctx.facingFloor = int(kFacingFarField * m.fn);
         ctx.faceCount = &m.fn;
     }
     // A face target in the far field: the input's points are kept for it (far_field.h).
-    ctx.farFieldFloor = int(kFacingFarField * m.fn);
     if (stats.targetFaces > 0 && stats.targetFaces < ctx.farFieldFloor)
         ctx.farField = std::make_shared<FarFieldDistances<MeshType>>(m);
     ctx.clearRingChanges(m);
@@ -352,7 +351,7 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
     };
     fillHeap();
     // A session bound for the far field first runs down to where it starts (far_field.h).
-    const bool farFieldAhead = ctx.farField && !ctx.farField->started() && stats.targetFaces > 0;
+    const bool farFieldAhead = ctx.farField && !ctx.farField->started();
     if (stats.targetFaces > 0)
         session.SetTargetSimplices(farFieldAhead ? std::max(stats.targetFaces, ctx.farFieldFloor) : stats.targetFaces);
     // Progress counts from the faces the simplification started with (a first phase,
@@ -397,7 +396,7 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
         stats.relaxed.push_back(line);
     }
     if (ctx.facingGaveWay)
-        stats.relaxed.push_back("faces may turn away from the input surface below " + std::to_string(ctx.facingFloor) +
+        stats.relaxed.push_back("faces may turn away from the input surface below " + std::to_string(ctx.farFieldFloor) +
                                 " faces (the far field: under 5 % of the input)");
 }
 
