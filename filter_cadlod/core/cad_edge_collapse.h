@@ -358,7 +358,8 @@ public:
         if (!feasible_)
             return false;
         if (ctx.params.preserveTopology &&
-            !vcg::tri::EdgeCollapser<MeshType, VertexPair>::LinkConditions(this->pos)) {
+            !vcg::tri::EdgeCollapser<MeshType, VertexPair>::LinkConditions(this->pos) &&
+            !(ctx.inFarField() && foldsTetrahedron(this->pos.V(0), this->pos.V(1)))) {
             ++ctx.stats->rejectedTopology;
             TunnelCut<MeshType>::offer(ctx, this->pos.V(0), this->pos.V(1));
             return false;
@@ -881,6 +882,8 @@ private:
             }
         if (best < 0)
             return reject(anyFlip ? stats.rejectedFlip : stats.rejectedCompactness);
+        const double farField2 =
+            ctx.inFarField() ? farFieldPlacement(ctx, v0, v1, cand, count, area, floorFor, best, bestScore, failed) : 0;
 
         const double cost = cand[best].cost;
         target_ = vcg::Point3<ScalarType>::Construct(cand[best].p);
@@ -893,21 +896,58 @@ private:
         const double qualityThr = ctx.params.qualityThreshold;
         const double shape = qualityThr > 0 ? std::clamp(bestScore.meanCompactness / qualityThr, 0.02, 1.0) : 1.0;
         if (ctx.inFarField()) {
-            const double opened = farFieldDistance(ctx, v0, v1, cand[best].p);
-            const double mean = double(error_);
-            this->_priority =
-                ScalarType(ctx.farFieldPriority(std::sqrt(opened * opened + kFarFieldMeanShare * mean * mean)));
+            this->_priority = ScalarType(ctx.farFieldPriority(std::sqrt(farField2)));
         } else {
             this->_priority = priorityOf(ctx, cand[best].ranked, ctx.quadrics.cappedArea(v0, v1), shape);
         }
     }
 
-    // The largest distance the collapse to p opens (far_field.h): from the input's points
-    // of the faces it changes to the faces it makes, and from p to the input surface.
-    static double farFieldDistance(const Context& ctx, VertexType* v0, VertexType* v1, const vcg::Point3d& p)
+    // In the far field the placement is the valid candidate that opens the smallest distance
+    // (far_field.h), its quadric error beside at kFarFieldMeanShare, not the one the quadrics
+    // and compactness chose: with a few hundred faces left, a placement a few planes cheaper
+    // may still stand off the input where another does not. A fold of a tetrahedron counts
+    // kFoldWidth times the distance. `best` and `bestScore` follow the choice; returns its
+    // squared distance.
+    template <class FloorFor>
+    double farFieldPlacement(Context& ctx, VertexType* v0, VertexType* v1, const Candidate* cand, int count,
+                             double area, const FloorFor& floorFor, int& best, PlacementScore& bestScore, int& failed)
     {
-        const double forward = ctx.farField->collapseError(v0, v1, p, ctx.ring);
-        return ctx.surface ? std::max(forward, ctx.surface->distance(p)) : forward;
+        const double fold = foldsTetrahedron(v0, v1) ? kFoldWidth : 1.0;
+        auto mean2 = [&](int i) { return kFarFieldMeanShare * (area > 0 ? cand[i].cost / area : cand[i].cost); };
+        std::uint32_t farthest = FarFieldDistances<MeshType>::kNoPoint;
+        auto opened = [&](int i, double enough) {
+            return fold * farFieldDistance(ctx, v0, v1, cand[i].p, enough / fold, farthest);
+        };
+        const double first = opened(best, std::numeric_limits<double>::max());
+        double best2 = first * first + mean2(best);
+        for (int i = 0; i < count; ++i) {
+            const double m2 = mean2(i);
+            if (i == best || m2 >= best2)
+                continue;  // its quadric error alone ranks it no better
+            const double d = opened(i, std::sqrt(best2 - m2));
+            const double d2 = d * d + m2;
+            if (d2 >= best2)
+                continue;
+            const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed);
+            if (!s.valid)
+                continue;
+            best = i;
+            bestScore = s;
+            best2 = d2;
+        }
+        return best2;
+    }
+
+    // The largest distance the collapse to p opens (far_field.h): from the input's points
+    // of the faces it changes to the faces it makes, and from p to the input surface; once
+    // it reaches `enough`, the rest is not looked at (`farthest`: collapseError's).
+    static double farFieldDistance(const Context& ctx, VertexType* v0, VertexType* v1, const vcg::Point3d& p,
+                                   double enough, std::uint32_t& farthest)
+    {
+        const double forward = ctx.farField->collapseError(v0, v1, p, ctx.ring, enough, farthest);
+        if (!ctx.surface || forward >= enough)
+            return forward;
+        return std::max(forward, ctx.surface->distance(p));
     }
 
     vcg::Point3<ScalarType> target_;

@@ -14,6 +14,8 @@
 //   and from its new vertex to the input surface, with its quadric error beside
 //   (kFarFieldMeanShare);
 // - a component's removal, by the gap it leaves (component_removal.h).
+// The placement of a collapse is then the candidate that opens the least, and a
+// tetrahedron may fold into a fin (foldsTetrahedron).
 // After a collapse its points go to the nearest of the faces around the new vertex; a
 // removed component's points go with it (its gap is the distance they were ranked at).
 #pragma once
@@ -36,6 +38,41 @@ namespace cadlod {
 // a flat region open none, and among those the quadric still tells which moves the surface
 // least. Tried at 0, 0.5, 1, 2, 4 and 16 on the far-field bench (docs/benchmarks.md).
 inline constexpr double kFarFieldMeanShare = 0.5;
+
+// A fin is seen edge-on from the directions in its plane, where the part's whole width
+// across it vanishes, about twice the distance the fold opens (the fin runs through the
+// middle): so a fold is ranked at this many times that distance. Tried at 1, 1.5, 2 and 3
+// on the far-field bench (docs/benchmarks.md).
+inline constexpr double kFoldWidth = 2.0;
+
+// Whether v0 and v1 are an edge of a tetrahedron, a closed component of four faces: its
+// collapse fails the link condition (the other two vertices are neighbours of both and
+// joined by an edge), yet in the far field it is the cheapest step a small tall part can
+// take. It folds the part into a fin, two faces back to back, which keeps the part's
+// height and outline from the side where removing it opens its whole height (a board's
+// capacitors at 99 %: meshoptimizer keeps them so). A fin's own edges stay refused, and
+// the fin is removed whole like any component.
+template <class VertexType>
+bool foldsTetrahedron(VertexType* v0, VertexType* v1)
+{
+    using FaceType = typename VertexType::FaceType;
+    VertexType* seen[4] = {v0, v1, nullptr, nullptr};
+    int faces = 0;
+    for (VertexType* v : {v0, v1})
+        for (vcg::face::VFIterator<FaceType> vfi(v); !vfi.End(); ++vfi) {
+            if (++faces > 6)
+                return false;
+            for (int k = 0; k < 3; ++k) {
+                VertexType* x = vfi.F()->V(k);
+                if (std::find(seen, seen + 4, x) != seen + 4)
+                    continue;
+                if (seen[3])
+                    return false;  // a fifth vertex
+                *std::find(seen, seen + 4, nullptr) = x;
+            }
+        }
+    return faces == 6 && seen[3];
+}
 
 template <class MeshType>
 class FarFieldDistances
@@ -74,21 +111,39 @@ public:
         }
     }
 
+    static constexpr std::uint32_t kNoPoint = std::numeric_limits<std::uint32_t>::max();
+
     // The largest distance from the points of the faces around v0 and v1 to the triangles
-    // (p, a, b) of `ring` (the faces a collapse of the edge to p makes).
+    // (p, a, b) of `ring` (the faces a collapse of the edge to p makes); once it reaches
+    // `enough`, the rest of the points are skipped. `farthest` names the point found
+    // farthest, and a point it names already is measured first: the placements of one
+    // collapse mostly share their farthest point, and with the largest distance known
+    // early most points stop at the first face within it.
     template <class Ring>
-    double collapseError(VertexType* v0, VertexType* v1, const vcg::Point3d& p, const Ring& ring) const
+    double collapseError(VertexType* v0, VertexType* v1, const vcg::Point3d& p, const Ring& ring, double enough,
+                         std::uint32_t& farthest) const
     {
+        const double enough2 = enough < std::sqrt(std::numeric_limits<double>::max()) ? enough * enough
+                                                                                      : std::numeric_limits<double>::max();
         double largest2 = 0;
-        forEachPointAround(v0, v1, [&](std::uint32_t i) {
+        auto measure = [&](std::uint32_t i) {
             double nearest2 = std::numeric_limits<double>::max();
             for (const auto& face : ring) {
                 nearest2 = std::min(nearest2, TriangleTree::triangleDistance2({p, face.a, face.b}, points_[i]));
                 if (nearest2 <= largest2)
-                    break;  // cannot raise the largest
+                    return;  // cannot raise the largest
             }
-            if (nearest2 < std::numeric_limits<double>::max())
-                largest2 = std::max(largest2, nearest2);
+            if (nearest2 < std::numeric_limits<double>::max()) {
+                largest2 = nearest2;
+                farthest = i;
+            }
+        };
+        if (farthest != kNoPoint)
+            measure(farthest);
+        const std::uint32_t first = farthest;
+        forEachPointAround(v0, v1, [&](std::uint32_t i) {
+            if (largest2 < enough2 && i != first)
+                measure(i);
         });
         return std::sqrt(largest2);
     }

@@ -331,8 +331,9 @@ bool runHeap(vcg::LocalOptimization<MeshType>& session)
 //      refuses every collapse (tunnel_cut.h), logged;
 //   2. the shape guards (minCompactness, no free slivers).
 // Flips of a face against itself (cad_edge_collapse.h's normal checks), the link condition
-// on collapses (no collapse changes the topology: only a priced cut does) and locked
-// (non-manifold) vertices never give way.
+// on collapses (no collapse changes the topology: only a priced cut does, and in the far
+// field the fold of a tetrahedron into a fin, far_field.h) and locked (non-manifold)
+// vertices never give way.
 template <class MeshType>
 void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats, vcg::CallBackPos* progress)
 {
