@@ -903,7 +903,8 @@ private:
     }
 
     // In the far field the placement is the valid candidate that opens the smallest distance
-    // (far_field.h), its quadric error beside at kFarFieldMeanShare, not the one the quadrics
+    // (far_field.h), its quadric error and swept volume beside (kFarFieldMeanShare,
+    // kFarFieldSweptShare), not the one the quadrics
     // and compactness chose: with a few hundred faces left, a placement a few planes cheaper
     // may still stand off the input where another does not. A fold of a tetrahedron counts
     // kFoldWidth times the distance. `best` and `bestScore` follow the choice; returns its
@@ -913,7 +914,11 @@ private:
                              double area, const FloorFor& floorFor, int& best, PlacementScore& bestScore, int& failed)
     {
         const double fold = foldsTetrahedron(v0, v1) ? kFoldWidth : 1.0;
-        auto mean2 = [&](int i) { return kFarFieldMeanShare * (area > 0 ? cand[i].cost / area : cand[i].cost); };
+        auto mean2 = [&](int i) {  // the terms beside the distance opened
+            const double swept = sweptLength(ctx, cand[i].p);
+            return kFarFieldMeanShare * (area > 0 ? cand[i].cost / area : cand[i].cost) +
+                   kFarFieldSweptShare * swept * swept;
+        };
         std::uint32_t farthest = FarFieldDistances<MeshType>::kNoPoint;
         auto opened = [&](int i, double enough) {
             return fold * farFieldDistance(ctx, v0, v1, cand[i].p, enough / fold, farthest);
@@ -923,7 +928,7 @@ private:
         for (int i = 0; i < count; ++i) {
             const double m2 = mean2(i);
             if (i == best || m2 >= best2)
-                continue;  // its quadric error alone ranks it no better
+                continue;  // the terms beside the distance alone rank it no better
             const double d = opened(i, std::sqrt(best2 - m2));
             const double d2 = d * d + m2;
             if (d2 >= best2)
@@ -936,6 +941,16 @@ private:
             best2 = d2;
         }
         return best2;
+    }
+
+    // The edge of a cube of the volume the collapse to p sweeps: between each face of the
+    // ring before the collapse and after it, the tetrahedron of the old face and p.
+    static double sweptLength(const Context& ctx, const vcg::Point3d& p)
+    {
+        double sixVolumes = 0;
+        for (const RingFace& f : ctx.ring)
+            sixVolumes += std::abs(f.normal.dot(p - f.a));
+        return std::cbrt(sixVolumes / 6.0);
     }
 
     // The largest distance the collapse to p opens (far_field.h): from the input's points

@@ -11,8 +11,8 @@
 // largest distance it opens:
 // - a collapse, by the largest distance from the points of the faces it changes to the
 //   faces it makes (the points may lie nearer another face: never less than the truth),
-//   and from its new vertex to the input surface, with its quadric error beside
-//   (kFarFieldMeanShare);
+//   and from its new vertex to the input surface, with its quadric error and the volume
+//   it sweeps beside (kFarFieldMeanShare, kFarFieldSweptShare);
 // - a component's removal, by the gap it leaves (component_removal.h).
 // The placement of a collapse is then the candidate that opens the least, and a
 // tetrahedron may fold into a fin (foldsTetrahedron).
@@ -38,6 +38,13 @@ namespace cadlod {
 // a flat region open none, and among those the quadric still tells which moves the surface
 // least. Tried at 0, 0.5, 1, 2, 4 and 16 on the far-field bench (docs/benchmarks.md).
 inline constexpr double kFarFieldMeanShare = 0.5;
+
+// A distance misses what a viewer of a solid sees at that size: its outline. Flattening a
+// plate's corner opens half the plate's thickness but takes a wedge out of its outline in
+// every side view, while folding a boss into a fin opens its radius and takes less. So the
+// volume a collapse sweeps counts beside, as the edge of a cube of that volume, squared,
+// at this share. Tried at 0.1 to 0.5 on the far-field bench (docs/benchmarks.md).
+inline constexpr double kFarFieldSweptShare = 0.18;
 
 // A fin is seen edge-on from the directions in its plane, where the part's whole width
 // across it vanishes, about twice the distance the fold opens (the fin runs through the
