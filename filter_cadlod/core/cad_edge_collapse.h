@@ -904,17 +904,16 @@ private:
 
     // In the far field the placement is the valid candidate that opens the smallest distance
     // (far_field.h), its quadric error and swept volume beside (kFarFieldMeanShare,
-    // kFarFieldSweptShare), not the one the quadrics
-    // and compactness chose: with a few hundred faces left, a placement a few planes cheaper
-    // may still stand off the input where another does not. A fold of a tetrahedron counts
-    // kFoldWidth times the distance. `best` and `bestScore` follow the choice; returns its
-    // squared distance.
+    // kFarFieldSweptShare), not the one the quadrics and compactness chose: with a few
+    // hundred faces left, a placement a few planes cheaper may still stand off the input
+    // where another does not. A fold of a tetrahedron counts kFoldWidth times the distance.
+    // `best` and `bestScore` follow the choice; returns its squared distance.
     template <class FloorFor>
     double farFieldPlacement(Context& ctx, VertexType* v0, VertexType* v1, const Candidate* cand, int count,
                              double area, const FloorFor& floorFor, int& best, PlacementScore& bestScore, int& failed)
     {
         const double fold = foldsTetrahedron(v0, v1) ? kFoldWidth : 1.0;
-        auto mean2 = [&](int i) {  // the terms beside the distance opened
+        auto beside2 = [&](int i) {  // the terms beside the distance opened, squared
             const double swept = sweptLength(ctx, cand[i].p);
             return kFarFieldMeanShare * (area > 0 ? cand[i].cost / area : cand[i].cost) +
                    kFarFieldSweptShare * swept * swept;
@@ -924,9 +923,9 @@ private:
             return fold * farFieldDistance(ctx, v0, v1, cand[i].p, enough / fold, farthest);
         };
         const double first = opened(best, std::numeric_limits<double>::max());
-        double best2 = first * first + mean2(best);
+        double best2 = first * first + beside2(best);
         for (int i = 0; i < count; ++i) {
-            const double m2 = mean2(i);
+            const double m2 = beside2(i);
             if (i == best || m2 >= best2)
                 continue;  // the terms beside the distance alone rank it no better
             const double d = opened(i, std::sqrt(best2 - m2));
