@@ -121,6 +121,21 @@ std::string levelList(const std::vector<LodLevel>& levels)
     return s;
 }
 
+// One line per level: faces, measured error (% of the diagonal) and the distances between
+// which it is drawn (in diagonals), each level's share of the scene figure beside.
+void printLevelRanges(const std::vector<LodLevel>& levels, double diagonal)
+{
+    const double R = 1000.0 * diagonal;
+    for (const LodLevel& l : levels) {
+        const double a = std::min(l.switchOut, R), b = std::min(l.switchIn, R);
+        const double scene = b > a ? l.faces * (b * b - a * a) / (R * R) : 0.0;
+        std::printf("    level %2d: %7d faces, error %8.4f %%, drawn %10.4g to %10.4g diagonals, scene %.3f "
+                    "triangles\n",
+                    l.level, l.faces, 100 * l.hausdorffMax / diagonal, l.switchOut / diagonal,
+                    std::min(l.switchIn, 1e9 * diagonal) / diagonal, scene);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -132,6 +147,7 @@ int main(int argc, char** argv)
     std::size_t samples = 0;
     bool withMeshopt = true;  // its chain takes minutes on a 1M-triangle shaft
     bool twoThreads = false;  // cadlod's chain and the 90 % run on two threads (measuring beside collapsing, two halves)
+    bool printLevels = false; // each level's error and range after its chain's row
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--plot") && i + 1 < argc)
             plotDir = argv[++i];
@@ -145,9 +161,11 @@ int main(int argc, char** argv)
             withMeshopt = false;
         else if (!std::strcmp(argv[i], "--two-threads"))
             twoThreads = true;
+        else if (!std::strcmp(argv[i], "--levels"))
+            printLevels = true;
         else if (argv[i][0] == '-') {
             std::fprintf(stderr, "usage: chain_bench [--assembly-segments N] [--shaft TRIANGLES] [--plot DIR] "
-                                 "[--samples N] [--no-meshopt] [--two-threads] FILE...\n");
+                                 "[--samples N] [--no-meshopt] [--two-threads] [--levels] FILE...\n");
             return 2;
         } else
             files.push_back(argv[i]);
@@ -172,6 +190,8 @@ int main(int argc, char** argv)
         std::printf("| %s | %d | cadlod | %zu | %s | %.3f%% | %.3f%% | %.2f | %.2f | %.2f |\n", name.c_str(), input.fn,
                     ours.levels.size(), levelList(ours.levels).c_str(), 100 * a.pathShare, 100 * a.sceneShare,
                     a.worstPixels, ours.seconds, ours.seconds / single);
+        if (printLevels)
+            printLevelRanges(ours.levels, diagonal);
         std::fflush(stdout);
         if (!withMeshopt)
             return;
@@ -180,6 +200,8 @@ int main(int argc, char** argv)
         std::printf("| | | meshopt | %zu | %s | %.3f%% | %.3f%% | %.2f | %.2f | |\n", theirs.levels.size(),
                     levelList(theirs.levels).c_str(), 100 * b.pathShare, 100 * b.sceneShare, b.worstPixels,
                     theirs.seconds);
+        if (printLevels)
+            printLevelRanges(theirs.levels, diagonal);
         std::printf("| | | ratio | | | **%.2f** | **%.2f** | | | |\n", a.pathShare / b.pathShare,
                     a.sceneShare / b.sceneShare);
         std::fflush(stdout);

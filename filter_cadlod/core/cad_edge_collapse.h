@@ -164,10 +164,14 @@ struct CollapseContext : public vcg::BaseParameterClass {
     double flatError2 = 0.0;      // (flatTolerance * diagonal)²: collapses within it are free
     double roundingError2 = 0.0;  // (kRoundingOfFloat * the coordinates' magnitude)²
     double maxErrorAbs = 0.0;     // 0: unbounded
+    // In the far field, when > 0: the largest distance an operation may open, in place of
+    // maxErrorAbs (an LOD chain's budget, params.farFieldWithinBound).
+    double maxDistance = 0.0;
     double cosNormalLimit = -1.0;
     double cosShadingAngle = 1.0;  // faces turned further from their input face change shade
     double shadingScale = 0.0;     // shadingWeight × diagonal²: the price of a unit of turned area
     double largestError = 0.0;    // over executed collapses
+    double largestDistance = 0.0; // over operations held to maxDistance (far field)
     double largestFeatureBreak = 0.0;  // largest error of an executed collapse that broke a feature
     bool shapeGuards = true;      // minCompactness and the free-sliver guard apply (relaxed last)
     typename vcg::LocalOptimization<MeshType>::HeapType* heap = nullptr;  // for re-queued entries
@@ -189,6 +193,22 @@ struct CollapseContext : public vcg::BaseParameterClass {
     // The priority of an operation in the far field: the distance it opens, squared, in
     // diagonals.
     double farFieldPriority(double distance) const { return distance * distance / (diagonal * diagonal); }
+    bool heldToDistance() const { return inFarField() && maxDistance > 0; }
+    // Whether an operation of this error, opening this distance, is beyond the session's
+    // bound: the distance where it is held to one, else the error.
+    bool exceedsBound(double error, double distance) const
+    {
+        return heldToDistance() ? distance > maxDistance : maxErrorAbs > 0 && error > maxErrorAbs;
+    }
+    // An executed operation's error, or its distance where it is held to one (the bound it
+    // was checked against, which an LOD chain learns from).
+    void recordError(double error, double distance)
+    {
+        if (heldToDistance())
+            largestDistance = std::max(largestDistance, distance);
+        else
+            largestError = std::max(largestError, error);
+    }
     double facingPenalty = 0.0;
     bool facingGaveWay = false;      // a collapse ran unchecked below farFieldFloor
     const int* faceCount = nullptr;  // the mesh's live faces (m.fn)
@@ -402,7 +422,7 @@ public:
         *ctx.vertexCounter -= deleted.vertices;
         for (VertexType* x : featureApex)
             markEdge(ctx, v1, x);
-        ctx.largestError = std::max(ctx.largestError, double(error_));
+        ctx.recordError(error_, distance_);
         if (breaksFeature_) {
             ++ctx.stats->featureBreaks;
             ctx.largestFeatureBreak = std::max(ctx.largestFeatureBreak, double(error_));
@@ -882,8 +902,10 @@ private:
             }
         if (best < 0)
             return reject(anyFlip ? stats.rejectedFlip : stats.rejectedCompactness);
-        const double farField2 =
-            ctx.inFarField() ? farFieldPlacement(ctx, v0, v1, cand, count, area, floorFor, best, bestScore, failed) : 0;
+        const FarFieldChoice farField =
+            ctx.inFarField() ? farFieldPlacement(ctx, v0, v1, cand, count, area, floorFor, best, bestScore, failed)
+                             : FarFieldChoice();
+        distance_ = farField.opened;
 
         const double cost = cand[best].cost;
         target_ = vcg::Point3<ScalarType>::Construct(cand[best].p);
@@ -891,12 +913,12 @@ private:
         breaksFeature_ = cand[best].breaks;
         offEdge_ = cand[best].offEdge;
         free_ = cost <= flatFloor;
-        if (ctx.maxErrorAbs > 0 && error_ > ctx.maxErrorAbs)
+        if (ctx.exceedsBound(error_, distance_))
             return reject(stats.rejectedError);
         const double qualityThr = ctx.params.qualityThreshold;
         const double shape = qualityThr > 0 ? std::clamp(bestScore.meanCompactness / qualityThr, 0.02, 1.0) : 1.0;
         if (ctx.inFarField()) {
-            this->_priority = ScalarType(ctx.farFieldPriority(std::sqrt(farField2)));
+            this->_priority = ScalarType(ctx.farFieldPriority(std::sqrt(farField.ranked2)));
         } else {
             this->_priority = priorityOf(ctx, cand[best].ranked, ctx.quadrics.cappedArea(v0, v1), shape);
         }
@@ -907,9 +929,13 @@ private:
     // kFarFieldSweptShare), not the one the quadrics and compactness chose: with a few
     // hundred faces left, a placement a few planes cheaper may still stand off the input
     // where another does not. A fold of a tetrahedron counts kFoldWidth times the distance.
-    // `best` and `bestScore` follow the choice; returns its squared distance.
+    // `best` and `bestScore` follow the choice.
+    struct FarFieldChoice {
+        double ranked2 = 0.0;  // the squared distance it is ranked at, the terms beside included
+        double opened = 0.0;   // the distance it opens
+    };
     template <class FloorFor>
-    double farFieldPlacement(Context& ctx, VertexType* v0, VertexType* v1, const Candidate* cand, int count,
+    FarFieldChoice farFieldPlacement(Context& ctx, VertexType* v0, VertexType* v1, const Candidate* cand, int count,
                              double area, const FloorFor& floorFor, int& best, PlacementScore& bestScore, int& failed)
     {
         const double fold = foldsTetrahedron(v0, v1) ? kFoldWidth : 1.0;
@@ -924,6 +950,7 @@ private:
         };
         const double first = opened(best, std::numeric_limits<double>::max());
         double best2 = first * first + beside2(best);
+        double bestOpened = first / fold;
         for (int i = 0; i < count; ++i) {
             const double m2 = beside2(i);
             if (i == best || m2 >= best2)
@@ -938,8 +965,9 @@ private:
             best = i;
             bestScore = s;
             best2 = d2;
+            bestOpened = d / fold;
         }
-        return best2;
+        return {best2, bestOpened};
     }
 
     // The edge of a cube of the volume the collapse to p sweeps: between each face of the
@@ -966,6 +994,7 @@ private:
 
     vcg::Point3<ScalarType> target_;
     float error_ = 0.0f;
+    double distance_ = 0.0;  // in the far field: the distance the collapse opens, as ranked
     bool feasible_ = true;
     bool breaksFeature_ = false;
     bool evaluated_ = false;

@@ -73,11 +73,13 @@ public:
         return true;
     }
 
-    // Every bucket collapsed until its collapses would exceed `maxErrorAbs`.
-    void collapse(double maxErrorAbs, const RunTogether& together)
+    // Every bucket collapsed until its collapses would exceed `maxErrorAbs`, or in the far
+    // field (params.farFieldWithinBound) open more than `maxDistance`.
+    void collapse(double maxErrorAbs, double maxDistance, const RunTogether& together)
     {
         for (Bucket& b : buckets_) {
             b.ctx.maxErrorAbs = maxErrorAbs;
+            b.ctx.maxDistance = maxDistance;
             b.stats.targetFaces = 0;
             b.stats.errorBound = maxErrorAbs;
         }
@@ -110,6 +112,34 @@ public:
         for (const Bucket& b : buckets_)
             e = std::max(e, b.ctx.largestError);
         return e;
+    }
+
+    double largestDistance() const
+    {
+        double e = 0.0;
+        for (const Bucket& b : buckets_)
+            e = std::max(e, b.ctx.largestDistance);
+        return e;
+    }
+
+    // Takes every bucket into the far field (params.farFieldWithinBound), logged in its
+    // statistics.
+    void startFarField()
+    {
+        for (Bucket& b : buckets_)
+            if (b.ready && b.ctx.farField && !b.ctx.farField->started() && b.mesh.fn > 0) {
+                b.ctx.farField->start(b.mesh);
+                b.stats.relaxed.push_back("far field from " + std::to_string(b.mesh.fn) +
+                                          " faces: collapses and removals ranked by the largest distance they "
+                                          "open, and held to the budget by it");
+            }
+    }
+
+    // Whether every bucket that has faces left is in the far field.
+    bool inFarField() const
+    {
+        return std::all_of(buckets_.begin(), buckets_.end(),
+                           [](const Bucket& b) { return b.mesh.fn == 0 || b.ctx.inFarField(); });
     }
 
     // The buckets' statistics added up onto `total` (counts summed, largest values kept,

@@ -57,7 +57,8 @@ public:
         RestOfModel rest(m, components, !ctx.mayRemoveLargestComponent);
         for (std::size_t i = 0; i < removable; ++i) {
             const Component<MeshType>& c = components[i];
-            if (ctx.maxErrorAbs > 0 && c.size() > ctx.maxErrorAbs)
+            const double bound = ctx.heldToDistance() ? ctx.maxDistance : ctx.maxErrorAbs;
+            if (bound > 0 && c.size() > bound)
                 break;
             if (touching[i])
                 continue;
@@ -73,8 +74,8 @@ public:
                 weight += ctx.quadrics.area(v) / 3.0;
             // In the far field a removal is ranked by the gap it leaves, as collapses are by
             // the distance they open there (far_field.h).
-            const double distance = rest.farthest(vertices, i, ctx.inFarField() ? 0.0 : c.size());
-            if (ctx.maxErrorAbs > 0 && distance > ctx.maxErrorAbs)
+            const double distance = rest.farthest(vertices, i, ctx.inFarField() && rest.measures() ? 0.0 : c.size());
+            if (ctx.exceedsBound(distance, distance))
                 continue;
             const double cost = penalty * weight * distance * distance;
             const double priority = ctx.inFarField() ? ctx.farFieldPriority(distance) : ctx.priority(cost, weight, 1.0);
@@ -103,7 +104,7 @@ public:
         removeComponent(m, c);
         ++ctx.stats->removedComponents;
         ctx.stats->largestRemovedComponent = std::max(ctx.stats->largestRemovedComponent, size_);
-        ctx.largestError = std::max(ctx.largestError, distance_);
+        ctx.recordError(distance_, distance_);
         const double percent = ctx.diagonal > 0 ? 100.0 / ctx.diagonal : 0.0;
         char standingOff[64] = "";
         if (distance_ > size_)
@@ -133,6 +134,8 @@ private:
         // larger. The vertex farthest from the rest is one of the component's extremes; and
         // each search has to pass over every face of the component's own that lies nearer,
         // so searching from every vertex of a large component would take its size squared.
+        bool measures() const { return measure_; }
+
         double farthest(const std::vector<VertexType*>& vertices, std::size_t component, double floor)
         {
             double farthest = floor;

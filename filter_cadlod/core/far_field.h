@@ -1,4 +1,5 @@
-// The far field (issue 13): below kFacingFarField of its input faces a mesh has a few
+// The far field (issue 13): below kFacingFarField of its input faces (toward a face target),
+// or in an LOD chain's levels where the model is a few dozen pixels high, a mesh has a few
 // hundred faces left for what had thousands, and what a viewer sees of a collapse there is
 // how far it moves the surface, the Hausdorff distance, which the quadrics' sum of squared
 // plane distances ranks differently. A quadric sums over the planes a vertex stands for:
@@ -14,6 +15,8 @@
 //   and from its new vertex to the input surface, with its quadric error and the volume
 //   it sweeps beside (kFarFieldMeanShare, kFarFieldSweptShare);
 // - a component's removal, by the gap it leaves (component_removal.h).
+// An LOD chain's sessions are also held to their budget by that distance
+// (CollapseContext::maxDistance): the distance a collapse opens, without the terms beside.
 // The placement of a collapse is then the candidate that opens the least, and a
 // tetrahedron may fold into a fin (foldsTetrahedron).
 // After a collapse its points go to the nearest of the faces around the new vertex; a

@@ -13,12 +13,15 @@
 // model (collapse_buckets.h: whole connected components, side by side), each for the whole
 // chain (the quadrics carry the whole history, so errors do not restart at each level);
 // there features (part borders too, when they are kept) and whole small components give
-// way as soon as breaking them costs less than the budget (simplify.h). The pieces
+// way as soon as breaking them costs less than the budget (simplify.h). From where the
+// model is kFarFieldPixels high, the pieces are in the far field (far_field.h): operations
+// are ranked by the largest distance they open and held to the budget by it, since the
+// quadrics' error no longer tells how far a few hundred faces stand from thousands. The pieces
 // together are then taken as level k and measured against level 0 (symmetric Hausdorff)
 // while the sessions go on to the next level (the caller's RunTogether may run both at
 // once); the ratio between the measured and the requested error steers the budgets from
 // the level after next, so a collapse error that underestimates the distance a viewer sees
-// is corrected level by level. Where the model is `proxyPixels` high, a proxy is made:
+// is corrected level by level (in the far field, the ratio to the distance opened). Where the model is `proxyPixels` high, a proxy is made:
 // one axis-aligned box per remaining connected component (a box per part): the box of its
 // vertices or of its surface without what sticks out (a pin, a leg), whichever measures
 // closer. Collapse levels go on beyond it only while the box's measured error is still
@@ -63,6 +66,10 @@ struct LodChainOptions {
 inline constexpr double kBoxTrims[] = {0.0, 0.02, 0.05, 0.1};
 // The share of the simplifier's feature penalty that chain levels use (see buildLodChain).
 inline constexpr double kChainFeaturePenaltyShare = 0.5;
+// Where the model is this many pixels high (its diagonal), the pieces go into the far field
+// (far_field.h): from there on they rank operations by the distance they open and are held
+// to the budget by it. Tried at 16, 32 and 64 on the chain bench (docs/benchmarks.md).
+inline constexpr double kFarFieldPixels = 64.0;
 // Where the model is this many pixels high, a tetrahedron per component replaces its box.
 inline constexpr double kTetrahedronPixels = 2.0;
 // Switch-in distance of the last level when the model is never culled.
@@ -310,6 +317,9 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     params.largeFaceWeight = 0.0;
     params.shadingWeight = 0.0;  // so does pricing turned faces
     params.minCompactness = 0.05;
+    // The pieces keep the input's points for the far field (kFarFieldPixels), whose levels
+    // are what most of a scene's objects draw.
+    params.farFieldWithinBound = true;
     // Breaking a feature costs its own quadric error (the feature's constraint planes are in
     // it) times the penalty. The penalty ranks feature breaks behind collapses of the same
     // error, which keeps creases crisp at a fixed face count; under a Hausdorff budget it
@@ -339,6 +349,8 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // How much the measured Hausdorff distance exceeds the largest collapse error (an RMS
     // distance to the merged planes), learnt level by level.
     double hausdorffPerCollapseError = 2.0;
+    // ...and the largest distance opened in the far field, where the pieces are held to it.
+    double hausdorffPerFarFieldDistance = 1.0;
     // A level copied out of the pieces into a snapshot, measured while their sessions go on
     // to the next one. So the next budget uses the ratio learnt up to the level before it,
     // one level late; that rule does not depend on how the two run, so neither does the
@@ -351,6 +363,8 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     struct Snapshot {
         MeshType* mesh = nullptr;  // a scratch mesh, copied into a level mesh when kept
         SimplifyStats stats;  // its largestError: the largest collapse error up to it
+        double largestDistance = 0.0;  // ...and the largest distance opened in the far field
+        bool farField = false;         // every piece was in the far field
         Measures measured;
         bool taken = false;
     };
@@ -362,6 +376,8 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         s.stats = stats;
         s.stats.facesAfter = s.mesh->fn;
         s.stats.largestError = pieces.largestError();
+        s.largestDistance = pieces.largestDistance();
+        s.farField = pieces.inFarField();
         s.taken = true;
         stats.relaxed.clear();
     };
@@ -398,7 +414,9 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         between.mesh->Clear();
         between.taken = false;
         const double collapseError = pending.stats.largestError;
-        if (measured > 0 && collapseError > 0)
+        if (pending.farField && measured > 0 && pending.largestDistance > 0)
+            hausdorffPerFarFieldDistance = std::clamp(measured / pending.largestDistance, 1.0, 20.0);
+        else if (measured > 0 && collapseError > 0)
             hausdorffPerCollapseError = std::clamp(measured / collapseError, 1.0, 20.0);
         keep(pending);
     };
@@ -411,6 +429,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // serve there and they are still heavier than it, up to where the model is a couple of
     // pixels high; the selection of useful levels keeps whichever of them serves.
     const double dTetrahedron = detail::distanceForPixels(result.modelSize, kTetrahedronPixels, view);
+    const double dFarField = detail::distanceForPixels(result.modelSize, kFarFieldPixels, view);
     struct BoxProxy {
         MeshType* mesh = nullptr;
         Measures measured;
@@ -457,16 +476,20 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
                 break;
         }
         const double budget = detail::errorBudgetAt(d, view);
+        if (d >= dFarField)
+            pieces.startFarField();
         if (progress) {
             char text[96];
             std::snprintf(text, sizeof text, "Simplifying level %d, seen from %.3g model units", k + 1, d);
             progress(100 * std::min(k, plannedLevels) / (plannedLevels + 1), text);
         }
         const double bound = budget / hausdorffPerCollapseError;
+        const double distanceBound = budget / hausdorffPerFarFieldDistance;
         stats.targetFaces = 0;
-        stats.errorBound = bound;
+        stats.errorBound = d >= dFarField ? std::max(bound, distanceBound) : bound;
         const int before = pieces.faces();
-        together(measurePending, [&] { pieces.collapse(bound, together); });
+        together(measurePending,
+                 [&] { pieces.collapse(bound, distanceBound, together); });
         settlePending();
         pieces.addStatsTo(stats);
         const int previous = result.levels.back().faces;
@@ -479,6 +502,13 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     }
     together(measurePending, [] {});
     settlePending();
+    // A copy halfway past the last planned level has no level after it to overshoot: it is
+    // the lightest mesh the sessions reached, and a level like any other (the selection of
+    // useful levels drops it where the box serves better).
+    if (between.taken) {
+        between.measured = measure(*between.mesh);
+        keep(between);
+    }
     pieces.release();
 
     // The proxies, each when it is lighter than the last level: the box per component, then,

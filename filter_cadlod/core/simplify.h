@@ -259,8 +259,9 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
         ctx.facingPenalty = kFacingOverFeature * params.featurePenalty;
         ctx.faceCount = &m.fn;
     }
-    // A face target in the far field: the input's points are kept for it (far_field.h).
-    if (stats.targetFaces > 0 && stats.targetFaces < ctx.farFieldFloor)
+    // A face target in the far field, or a bounded session its caller takes into it
+    // (params.farFieldWithinBound): the input's points are kept for it (far_field.h).
+    if ((stats.targetFaces > 0 && stats.targetFaces < ctx.farFieldFloor) || params.farFieldWithinBound)
         ctx.farField = std::make_shared<FarFieldDistances<MeshType>>(m);
     ctx.clearRingChanges(m);
     ctx.faceCounter = &m.fn;
@@ -352,7 +353,7 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
     };
     fillHeap();
     // A session bound for the far field first runs down to where it starts (far_field.h).
-    const bool farFieldAhead = ctx.farField && !ctx.farField->started();
+    const bool farFieldAhead = ctx.farField && !ctx.farField->started() && stats.targetFaces > 0;
     if (stats.targetFaces > 0)
         session.SetTargetSimplices(farFieldAhead ? std::max(stats.targetFaces, ctx.farFieldFloor) : stats.targetFaces);
     // Progress counts from the faces the simplification started with (a first phase,

@@ -45,6 +45,11 @@ struct SimplifyParams {
     bool facingCheck = true;         // with normalCheck: a collapse leaving a face turned over 90° from
                                      // the input surface nearest to it is ranked like a feature break
                                      // (input_surface.h); off in the far field (under 5 % of the faces)
+    // An error-bounded session (no face target) keeps the input's points for a far field its
+    // caller starts (far_field.h), where each operation is held to the distance it opens
+    // (CollapseContext::maxDistance): an LOD chain's far levels, whose budgets are distances
+    // a viewer sees.
+    bool farFieldWithinBound = false;
     double minCompactness = 0.1;     // never create a face below this unless it improves the worst;
                                      // free collapses not below max(0.1, this); 0: no guard
     double qualityThreshold = 0.3;   // free collapses leaving faces below this compactness wait longer

@@ -127,7 +127,7 @@ public:
         ScalarType bestPriority = 0;
         for (VertexType* c : loopsThrough(a, b)) {
             Loop loop;
-            if (!trace({a, b, c}, ctx, loop) || (ctx.maxErrorAbs > 0 && loop.inradius > ctx.maxErrorAbs))
+            if (!trace({a, b, c}, ctx, loop) || ctx.exceedsBound(loop.inradius, loop.inradius))
                 continue;
             const double weight =
                 (ctx.quadrics.cappedArea(a) + ctx.quadrics.cappedArea(b) + ctx.quadrics.cappedArea(c)) / 3.0;
@@ -192,7 +192,7 @@ public:
             }
         ++ctx.stats->closedTunnels;
         ctx.stats->widestTunnelCap = std::max(ctx.stats->widestTunnelCap, loop.inradius);
-        ctx.largestError = std::max(ctx.largestError, loop.inradius);
+        ctx.recordError(loop.inradius, loop.inradius);
     }
 
     // Every edge of the six vertices, anew.

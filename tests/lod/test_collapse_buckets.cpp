@@ -48,11 +48,19 @@ struct Dealt {
     CollapseBuckets<TestMesh> buckets{[this]() -> TestMesh& { return meshes.emplace_back(); }};
     int chipPart = 0, copyPart = 0;
 
-    Dealt()
+    explicit Dealt(const SimplifyParams& params = {})
     {
         boardWithTouchingCopy(model, chipPart, copyPart);
         std::string error;
-        EXPECT_TRUE(buckets.prepare(model, SimplifyParams{}, error)) << error;
+        EXPECT_TRUE(buckets.prepare(model, params, error)) << error;
+    }
+    // The removed components, after collapsing every bucket.
+    int removedAfterCollapse(double maxErrorAbs, double maxDistance)
+    {
+        buckets.collapse(maxErrorAbs, maxDistance, runOnTwoThreads);
+        SimplifyStats stats;
+        buckets.addStatsTo(stats);
+        return stats.removedComponents;
     }
     // Per part, the buckets holding its faces.
     std::map<int, std::set<std::size_t>> bucketsOfPart()
@@ -103,7 +111,7 @@ TEST(CollapseBuckets, OnlyTheModelsLargestComponentAndTouchingOnesAreNeverRemove
 {
     Dealt d;
     // A bound far above the model's size: every removal is within it.
-    d.buckets.collapse(10 * liveDiagonal(d.model), runOnTwoThreads);
+    d.buckets.collapse(10 * liveDiagonal(d.model), 0.0, runOnTwoThreads);
     TestMesh all;
     d.buckets.appendTo(all);
     vcg::tri::UpdateTopology<TestMesh>::VertexFace(all);
@@ -115,5 +123,29 @@ TEST(CollapseBuckets, OnlyTheModelsLargestComponentAndTouchingOnesAreNeverRemove
     SimplifyStats stats;
     d.buckets.addStatsTo(stats);
     EXPECT_EQ(stats.removedComponents, d.copyPart - 2);  // every other part
+    d.buckets.release();
+}
+
+// In the far field a removal is held to the gap it leaves. A bucket without the model's
+// largest component cannot measure the gap to the rest, which is in other buckets: there the
+// component's size stands for it, never nothing (every small part of an assembly went at
+// once, at zero cost, in a chain's first far-field level).
+TEST(CollapseBuckets, InTheFarFieldAPartIsRemovedOnlyWhereItsGapIsWithinTheDistanceBound)
+{
+    SimplifyParams params;
+    params.farFieldWithinBound = true;
+    {
+        Dealt d(params);
+        d.buckets.startFarField();
+        ASSERT_TRUE(d.buckets.inFarField());
+        const double diagonal = liveDiagonal(d.model);
+        // The error bound is far above the model's size: in the far field the distance rules.
+        EXPECT_EQ(d.removedAfterCollapse(10 * diagonal, 1e-4 * diagonal), 0);
+        d.buckets.release();
+    }
+    Dealt d(params);
+    d.buckets.startFarField();
+    const double diagonal = liveDiagonal(d.model);
+    EXPECT_EQ(d.removedAfterCollapse(1e-4 * diagonal, 10 * diagonal), d.copyPart - 2);  // every other part
     d.buckets.release();
 }
