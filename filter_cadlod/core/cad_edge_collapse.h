@@ -925,8 +925,8 @@ private:
     }
 
     // In the far field the placement is the valid candidate that opens the smallest distance
-    // (far_field.h), its quadric error and swept volume beside (kFarFieldMeanShare,
-    // kFarFieldSweptShare), not the one the quadrics and compactness chose: with a few
+    // (far_field.h), its quadric error and, toward a face target, its swept volume beside
+    // (kFarFieldMeanShare, kFarFieldSweptShare), not the one the quadrics and compactness chose: with a few
     // hundred faces left, a placement a few planes cheaper may still stand off the input
     // where another does not. A fold of a tetrahedron counts kFoldWidth times the distance.
     // `best` and `bestScore` follow the choice.
@@ -939,10 +939,12 @@ private:
                              double area, const FloorFor& floorFor, int& best, PlacementScore& bestScore, int& failed)
     {
         const double fold = foldsTetrahedron(v0, v1) ? kFoldWidth : 1.0;
+        // A session held to a distance (an LOD chain's level) is judged by that distance
+        // alone, not by the outline the swept volume stands for (docs/benchmarks.md).
+        const double sweptShare = ctx.heldToDistance() ? 0.0 : kFarFieldSweptShare;
         auto beside2 = [&](int i) {  // the terms beside the distance opened, squared
-            const double swept = sweptLength(ctx, cand[i].p);
-            return kFarFieldMeanShare * (area > 0 ? cand[i].cost / area : cand[i].cost) +
-                   kFarFieldSweptShare * swept * swept;
+            const double swept = sweptShare > 0 ? sweptLength(ctx, cand[i].p) : 0.0;
+            return kFarFieldMeanShare * (area > 0 ? cand[i].cost / area : cand[i].cost) + sweptShare * swept * swept;
         };
         std::uint32_t farthest = FarFieldDistances<MeshType>::kNoPoint;
         auto opened = [&](int i, double enough) {

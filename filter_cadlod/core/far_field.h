@@ -16,7 +16,8 @@
 //   it sweeps beside (kFarFieldMeanShare, kFarFieldSweptShare);
 // - a component's removal, by the gap it leaves (component_removal.h).
 // An LOD chain's sessions are also held to their budget by that distance
-// (CollapseContext::maxDistance): the distance a collapse opens, without the terms beside.
+// (CollapseContext::maxDistance): the distance a collapse opens, without the terms beside;
+// and the swept volume, an outline term for a face target, is left out of their ranking.
 // The placement of a collapse is then the candidate that opens the least, and a
 // tetrahedron may fold into a fin (foldsTetrahedron).
 // After a collapse its points go to the nearest of the faces around the new vertex; a
@@ -91,14 +92,20 @@ public:
     using FaceType = typename MeshType::FaceType;
     using VertexType = typename MeshType::VertexType;
 
-    // Keeps the input's points: every live vertex and face centroid of `m` as it is now.
-    explicit FarFieldDistances(const MeshType& m)
+    // Keeps the input's points: every live vertex and face centroid of `m` as it is now, or,
+    // with `maxPoints` > 0 and more of them, every k-th vertex and centroid so that at most
+    // that many are kept (in the far field a face stands for thousands of input faces, and
+    // each collapse measures every point of the faces it changes).
+    explicit FarFieldDistances(const MeshType& m, std::size_t maxPoints = 0)
     {
+        const std::size_t all = std::size_t(m.vn) + std::size_t(m.fn);
+        const std::size_t step = maxPoints > 0 && all > maxPoints ? (all + maxPoints - 1) / maxPoints : 1;
+        std::size_t i = 0;
         for (const VertexType& v : m.vert)
-            if (!v.IsD())
+            if (!v.IsD() && i++ % step == 0)
                 points_.push_back(vcg::Point3d::Construct(v.cP()));
         for (const FaceType& f : m.face)
-            if (!f.IsD())
+            if (!f.IsD() && i++ % step == 0)
                 points_.push_back((vcg::Point3d::Construct(f.cP(0)) + vcg::Point3d::Construct(f.cP(1)) +
                                    vcg::Point3d::Construct(f.cP(2))) / 3.0);
     }

@@ -35,6 +35,11 @@ inline constexpr double kFacingFarField = 0.05;
 // face lit as the far side is an error the quadric does not see at all.
 inline constexpr double kFacingOverFeature = 2.0;
 
+// The input points an error-bounded session keeps for the far field (an LOD chain's
+// piece): its levels are measured against level 0 independently, and the ratio of that
+// measure to the distances opened steers the budgets (lod_chain.h), so a sample serves.
+inline constexpr std::size_t kBoundFarFieldPoints = 100000;
+
 namespace detail {
 
 inline bool validateParams(const SimplifyParams& p, std::string& why)
@@ -262,7 +267,8 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     // A face target in the far field, or a bounded session its caller takes into it
     // (params.farFieldWithinBound): the input's points are kept for it (far_field.h).
     if ((stats.targetFaces > 0 && stats.targetFaces < ctx.farFieldFloor) || params.farFieldWithinBound)
-        ctx.farField = std::make_shared<FarFieldDistances<MeshType>>(m);
+        ctx.farField = std::make_shared<FarFieldDistances<MeshType>>(
+            m, params.farFieldWithinBound ? kBoundFarFieldPoints : std::size_t(0));
     ctx.clearRingChanges(m);
     ctx.faceCounter = &m.fn;
     ctx.vertexCounter = &m.vn;

@@ -114,6 +114,25 @@ TEST(LodChain, SmallPartsGoOnlyWithinTheBudget)
     EXPECT_GT(removed, 0);
 }
 
+// Where the model is kFarFieldPixels high the pieces go into the far field, said in the log of
+// the first level made there; the levels before it are made by the quadric error.
+TEST(LodChain, FarLevelsAreMadeInTheFarField)
+{
+    LodChainOptions options;
+    Chain c(boardBuilder(), options);
+    ASSERT_TRUE(c.result.ok()) << c.result.error;
+    std::size_t first = 0;
+    for (std::size_t k = 1; k < c.result.levels.size() && first == 0; ++k)
+        for (const std::string& line : c.result.steps[k - 1].relaxed)
+            if (line.find("far field from") != std::string::npos)
+                first = k;
+    ASSERT_GT(first, 1u) << "no far field, or from the first level";
+    // The model is at most kFarFieldPixels high where that level is drawn (its budget there
+    // is at least the error of the level before it).
+    const LodLevel& level = c.result.levels[first];
+    EXPECT_LE(projectedPixels(c.result.modelSize, level.switchIn, options.view), kFarFieldPixels);
+}
+
 // Where a level's measured error lands more than the distance ratio beyond the level before
 // it (its budget underestimated the distance), the mesh the sessions passed through halfway is
 // measured and becomes a level before it, said in its log lines.
