@@ -127,11 +127,17 @@ void keepUsefulLevels(LodSetResult& r, std::vector<MeshType*>& meshes)
     kept.steps.clear();
     kept.distance.clear();
     std::vector<MeshType*> keptMeshes;
+    // What gave way for a dropped level is told by the next kept one (its lines say what
+    // gave way since the level before it).
+    std::vector<std::string> untold;
     for (std::size_t k = 0; k < r.levels.size(); ++k) {
         if (!selection.keep[k]) {
             kept.droppedLevels.push_back(int(k));
             kept.warnings.push_back("level " + std::to_string(k) + " (" + std::to_string(r.levels[k].faces) +
                                     " faces) dropped: " + selection.why[k]);
+            if (k > 0 && k - 1 < r.steps.size())
+                for (const std::string& line : r.steps[k - 1].relaxed)
+                    untold.push_back("(dropped level " + std::to_string(k) + ") " + line);
             continue;
         }
         LodLevel level = r.levels[k];
@@ -140,6 +146,9 @@ void keepUsefulLevels(LodSetResult& r, std::vector<MeshType*>& meshes)
         kept.compactness.push_back(r.compactness[k]);
         if (k > 0) {
             kept.steps.push_back(r.steps[k - 1]);
+            auto& lines = kept.steps.back().relaxed;
+            lines.insert(lines.begin(), untold.begin(), untold.end());
+            untold.clear();
             kept.distance.push_back(r.distance[k - 1]);
         }
         keptMeshes.push_back(meshes[k]);

@@ -165,6 +165,35 @@ TEST(LodBuilder, LevelsThatWouldNeverBeShownAreDroppedAndRenumbered)
     EXPECT_LT(b.result.levels[0].switchOut, b.result.levels[0].switchIn);
 }
 
+// What gave way for a level that is dropped is told by the next kept level, whose lines say
+// what gave way since the level before it.
+TEST(LodBuilder, ADroppedLevelsLogLinesGoToTheNextKeptLevel)
+{
+    LodSetResult r;
+    r.modelSize = 1.0;
+    std::vector<TestMesh> meshes(3);
+    std::vector<TestMesh*> pointers{&meshes[0], &meshes[1], &meshes[2]};
+    for (int k = 0; k < 3; ++k) {
+        LodLevel l;
+        l.level = k;
+        l.faces = 100 - 40 * k;
+        l.hausdorffMax = k == 1 ? 0.2 : 0.1 * k;  // level 1 is less accurate than level 2
+        r.levels.push_back(l);
+        r.compactness.emplace_back();
+        if (k > 0) {
+            r.steps.emplace_back();
+            r.steps.back().relaxed = {"gave way for level " + std::to_string(k)};
+            r.distance.emplace_back();
+        }
+    }
+    detail::keepUsefulLevels(r, pointers);
+    ASSERT_EQ(r.levels.size(), 2u);
+    EXPECT_EQ(r.droppedLevels, std::vector<int>{1});
+    ASSERT_EQ(r.steps.size(), 1u);
+    EXPECT_EQ(r.steps[0].relaxed, (std::vector<std::string>{"(dropped level 1) gave way for level 1", "gave way for level 2"}));
+    EXPECT_EQ(pointers, (std::vector<TestMesh*>{&meshes[0], &meshes[2]}));
+}
+
 TEST(LodBuilder, ASingleTriangleIsASetOfOneLevelWithWarnings)
 {
     Built b;
