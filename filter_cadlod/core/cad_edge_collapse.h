@@ -926,10 +926,10 @@ private:
 
     // In the far field the placement is the valid candidate that opens the smallest distance
     // (far_field.h), its quadric error and, toward a face target, its swept volume beside
-    // (kFarFieldMeanShare, kFarFieldSweptShare), not the one the quadrics and compactness chose: with a few
-    // hundred faces left, a placement a few planes cheaper may still stand off the input
-    // where another does not. A fold of a tetrahedron counts kFoldWidth times the distance.
-    // `best` and `bestScore` follow the choice.
+    // (kFarFieldMeanShare, kFarFieldSweptShare), not the one the quadrics and compactness
+    // chose: with a few hundred faces left, a placement a few planes cheaper may still stand
+    // off the input where another does not. A fold of a tetrahedron counts kFoldWidth times
+    // the distance. `best` and `bestScore` follow the choice.
     struct FarFieldChoice {
         double ranked2 = 0.0;  // the squared distance it is ranked at, the terms beside included
         double opened = 0.0;   // the distance it opens
@@ -996,7 +996,7 @@ private:
 
     vcg::Point3<ScalarType> target_;
     float error_ = 0.0f;
-    double distance_ = 0.0;  // in the far field: the distance the collapse opens, as ranked
+    double distance_ = 0.0;  // in the far field: the distance the collapse opens (not as ranked)
     bool feasible_ = true;
     bool breaksFeature_ = false;
     bool evaluated_ = false;

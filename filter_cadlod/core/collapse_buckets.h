@@ -106,21 +106,8 @@ public:
         return n;
     }
 
-    double largestError() const
-    {
-        double e = 0.0;
-        for (const Bucket& b : buckets_)
-            e = std::max(e, b.ctx.largestError);
-        return e;
-    }
-
-    double largestDistance() const
-    {
-        double e = 0.0;
-        for (const Bucket& b : buckets_)
-            e = std::max(e, b.ctx.largestDistance);
-        return e;
-    }
+    double largestError() const { return largestOver(&CollapseContext<MeshType>::largestError); }
+    double largestDistance() const { return largestOver(&CollapseContext<MeshType>::largestDistance); }
 
     // Takes every bucket into the far field (params.farFieldWithinBound), logged in its
     // statistics.
@@ -194,6 +181,15 @@ private:
         SimplifyStats reported;  // what addStatsTo has counted already
         bool ready = false;
     };
+
+    // The largest value of a session's `field` over the buckets.
+    double largestOver(double CollapseContext<MeshType>::*field) const
+    {
+        double e = 0.0;
+        for (const Bucket& b : buckets_)
+            e = std::max(e, b.ctx.*field);
+        return e;
+    }
 
     template <class Work>
     void forEachBucket(std::size_t begin, std::size_t end, const RunTogether& together, const Work& work)

@@ -57,8 +57,7 @@ public:
         RestOfModel rest(m, components, !ctx.mayRemoveLargestComponent);
         for (std::size_t i = 0; i < removable; ++i) {
             const Component<MeshType>& c = components[i];
-            const double bound = ctx.heldToDistance() ? ctx.maxDistance : ctx.maxErrorAbs;
-            if (bound > 0 && c.size() > bound)
+            if (ctx.exceedsBound(c.size(), c.size()))
                 break;
             if (touching[i])
                 continue;
@@ -129,13 +128,14 @@ private:
         {
         }
 
+        // Whether distances to the rest are measured here (else farthest() is its floor).
+        bool measures() const { return measure_; }
+
         // The largest distance from the extreme vertices of `vertices` (of component
         // `component`) to the nearest face of another component, or `floor` if that is
         // larger. The vertex farthest from the rest is one of the component's extremes; and
         // each search has to pass over every face of the component's own that lies nearer,
         // so searching from every vertex of a large component would take its size squared.
-        bool measures() const { return measure_; }
-
         double farthest(const std::vector<VertexType*>& vertices, std::size_t component, double floor)
         {
             double farthest = floor;

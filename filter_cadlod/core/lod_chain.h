@@ -16,13 +16,13 @@
 // way as soon as breaking them costs less than the budget (simplify.h). From where the
 // model is kFarFieldPixels high, the pieces are in the far field (far_field.h): operations
 // are ranked by the largest distance they open and held to the budget by it, since the
-// quadrics' error no longer tells how far a few hundred faces stand from thousands. The pieces
-// together are then taken as level k and measured against level 0 (symmetric Hausdorff)
-// while the sessions go on to the next level (the caller's RunTogether may run both at
-// once); the ratio between the measured and the requested error steers the budgets from
-// the level after next, so a collapse error that underestimates the distance a viewer sees
-// is corrected level by level (in the far field, the ratio to the distance opened). Where the model is `proxyPixels` high, a proxy is made:
-// one axis-aligned box per remaining connected component (a box per part): the box of its
+// quadrics' error no longer tells how far a few hundred faces stand from thousands. The
+// pieces together are then taken as level k and measured against level 0 (symmetric
+// Hausdorff) while the sessions go on to the next level (the caller's RunTogether may run
+// both at once); the ratio between the measured and the requested error steers the budgets
+// from the level after next, so a collapse error that underestimates the distance a viewer
+// sees is corrected level by level (in the far field, the ratio to the distance opened).
+// Where the model is `proxyPixels` high, a proxy is made: one axis-aligned box per remaining connected component (a box per part): the box of its
 // vertices or of its surface without what sticks out (a pin, a leg), whichever measures
 // closer. Collapse levels go on beyond it only while the box's measured error is still
 // above the budget and they are heavier than the box (a jack's deep socket keeps its box
@@ -476,7 +476,8 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
                 break;
         }
         const double budget = detail::errorBudgetAt(d, view);
-        if (d >= dFarField)
+        const bool farField = d >= dFarField;
+        if (farField)
             pieces.startFarField();
         if (progress) {
             char text[96];
@@ -486,10 +487,9 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         const double bound = budget / hausdorffPerCollapseError;
         const double distanceBound = budget / hausdorffPerFarFieldDistance;
         stats.targetFaces = 0;
-        stats.errorBound = d >= dFarField ? std::max(bound, distanceBound) : bound;
+        stats.errorBound = farField ? std::max(bound, distanceBound) : bound;
         const int before = pieces.faces();
-        together(measurePending,
-                 [&] { pieces.collapse(bound, distanceBound, together); });
+        together(measurePending, [&] { pieces.collapse(bound, distanceBound, together); });
         settlePending();
         pieces.addStatsTo(stats);
         const int previous = result.levels.back().faces;

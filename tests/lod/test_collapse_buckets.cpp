@@ -62,6 +62,18 @@ struct Dealt {
         buckets.addStatsTo(stats);
         return stats.removedComponents;
     }
+    // The parts the buckets still hold, one per connected component left.
+    std::set<int> partsLeft()
+    {
+        TestMesh all;
+        buckets.appendTo(all);
+        vcg::tri::UpdateTopology<TestMesh>::VertexFace(all);
+        std::set<int> parts;
+        auto part = facePartHandle(all);
+        for (const auto& c : connectedComponents(all))
+            parts.insert(part[c.faces.front()]);
+        return parts;
+    }
     // Per part, the buckets holding its faces.
     std::map<int, std::set<std::size_t>> bucketsOfPart()
     {
@@ -111,18 +123,8 @@ TEST(CollapseBuckets, OnlyTheModelsLargestComponentAndTouchingOnesAreNeverRemove
 {
     Dealt d;
     // A bound far above the model's size: every removal is within it.
-    d.buckets.collapse(10 * liveDiagonal(d.model), 0.0, runOnTwoThreads);
-    TestMesh all;
-    d.buckets.appendTo(all);
-    vcg::tri::UpdateTopology<TestMesh>::VertexFace(all);
-    std::set<int> partsLeft;
-    auto part = facePartHandle(all);
-    for (const auto& c : connectedComponents(all))
-        partsLeft.insert(part[c.faces.front()]);
-    EXPECT_EQ(partsLeft, (std::set<int>{0, d.chipPart, d.copyPart}));  // the board, the touching pair
-    SimplifyStats stats;
-    d.buckets.addStatsTo(stats);
-    EXPECT_EQ(stats.removedComponents, d.copyPart - 2);  // every other part
+    EXPECT_EQ(d.removedAfterCollapse(10 * liveDiagonal(d.model), 0.0), d.copyPart - 2);  // every other part
+    EXPECT_EQ(d.partsLeft(), (std::set<int>{0, d.chipPart, d.copyPart}));  // the board, the touching pair
     d.buckets.release();
 }
 
@@ -148,15 +150,8 @@ TEST(CollapseBuckets, InTheFarFieldAPartIsRemovedOnlyWhereItsGapIsWithinTheDista
     const double diagonal = liveDiagonal(d.model);
     // (A part may also be cut in two at a tunnel first: no fewer removals than parts.)
     EXPECT_GE(d.removedAfterCollapse(1e-4 * diagonal, 10 * diagonal), d.copyPart);
-    TestMesh all;
-    d.buckets.appendTo(all);
-    vcg::tri::UpdateTopology<TestMesh>::VertexFace(all);
-    std::set<int> partsLeft;
-    auto part = facePartHandle(all);
-    for (const auto& c : connectedComponents(all))
-        partsLeft.insert(part[c.faces.front()]);
     // Only the board: collapses within that distance part the touching pair too, which may
     // then go.
-    EXPECT_EQ(partsLeft, (std::set<int>{0}));
+    EXPECT_EQ(d.partsLeft(), (std::set<int>{0}));
     d.buckets.release();
 }
