@@ -26,8 +26,9 @@
 // vertices or of its surface without what sticks out (a pin, a leg), whichever measures
 // closer. Collapse levels go on beyond it only while the box's measured error is still
 // above the budget and they are heavier than the box (a jack's deep socket keeps its box
-// far off). Where the model is a couple of pixels high, the tetrahedron inscribed in each
-// box follows, and last one tetrahedron for the whole model.
+// far off). Where the model is a couple of pixels high, a tetrahedron in each box follows
+// (inscribed, or in the box grown about its centre, whichever measures closest), and last
+// one tetrahedron for the whole model.
 //
 // Every level's range comes from its measured error (lod_plan.h): it is drawn from where
 // that error projects to the pixel error, until the next level's does. The last level is
@@ -72,6 +73,11 @@ inline constexpr double kChainFeaturePenaltyShare = 0.5;
 inline constexpr double kFarFieldPixels = 64.0;
 // Where the model is this many pixels high, a tetrahedron per component replaces its box.
 inline constexpr double kTetrahedronPixels = 2.0;
+// The tetrahedra are tried inscribed in their boxes and in the boxes grown by these factors
+// about their centres, and the one with the smallest measured error is kept. Inscribed in a
+// cube, a tetrahedron leaves four corners a third of the diagonal off; grown 1.5 times, those
+// corners and its own vertices sticking out stand a quarter of the diagonal off each.
+inline constexpr double kTetrahedronScales[] = {1.0, 1.25, 1.5};
 // Switch-in distance of the last level when the model is never culled.
 inline constexpr double kNeverCulled = 1e30;
 // The first level is planned this many times closer than where the model fills the view.
@@ -121,6 +127,16 @@ ProxyBox proxyBoxOf(MeshType& m, const Component<MeshType>& c, const vcg::Box3d&
     if (vcg::tri::HasPerFaceColor(m))
         b.color = first->cC();
     return b;
+}
+
+// `boxes`, each grown by `factor` about its centre.
+inline std::vector<ProxyBox> grownBoxes(std::vector<ProxyBox> boxes, double factor)
+{
+    for (ProxyBox& b : boxes) {
+        const vcg::Point3d c = b.box.Center(), half = b.box.Dim() * (0.5 * factor);
+        b.box = vcg::Box3d(c - half, c + half);
+    }
+    return boxes;
 }
 
 // Replaces `m` by one closed shape per box, `append(m, box, part, colour)` making it.
@@ -206,14 +222,12 @@ std::vector<ProxyBox> proxyBoxes(MeshType& m, const std::vector<Component<MeshTy
     return boxes;
 }
 
-// Replaces `m` by one closed shape per connected component at least `minSize` large, made
-// from the component's box and keeping its part and colour; the smaller ones are left out,
-// counted in `stats`.
-template <class MeshType, class AppendShape>
-void proxyPerComponent(MeshType& m, double minSize, SimplifyStats& stats, const AppendShape& append)
+// The box of each connected component of `m` at least `minSize` large, with its part and
+// colour; the smaller ones, which no proxy stands for, are counted in `stats`.
+template <class MeshType>
+std::vector<ProxyBox> boxPerComponent(MeshType& m, double minSize, SimplifyStats& stats)
 {
-    const std::vector<Component<MeshType>> kept = componentsToKeep(m, minSize, stats);
-    replaceByProxies(m, proxyBoxes(m, kept, 0.0), append);
+    return proxyBoxes(m, componentsToKeep(m, minSize, stats), 0.0);
 }
 
 // The box of all of a model's live vertices, with the part and colour of its largest
@@ -512,8 +526,8 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     pieces.release();
 
     // The proxies, each when it is lighter than the last level: the box per component, then,
-    // where the model is a couple of pixels high, the tetrahedron inscribed in each box (the
-    // fewest triangles that still enclose a volume), and then one for the whole model. Each
+    // where the model is a couple of pixels high, a tetrahedron in each box (the fewest
+    // triangles that still enclose a volume), and then one for the whole model. Each
     // is drawn from where its measured error is within the pixel error, like any level.
     auto addProxy = [&](const std::string& what, int facesEach, const Measures* measured, const std::string& how = "") {
         if (working.fn == 0 || working.fn >= result.levels.back().faces)
@@ -534,17 +548,43 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
                                 " % of its area at either end of each axis (a pin or leg sticking out)"
                           : "";
     addProxy("box", 12, &boxProxy.measured, trimmed);
+    // A tetrahedron in each of `boxes`, grown by whichever of kTetrahedronScales measures
+    // closest, into `m`; `grownBy` tells the factor for the log. Nothing is measured where
+    // addProxy would not keep them.
+    std::string grownBy;
+    auto tetrahedraInto = [&](MeshType& m, const std::vector<detail::ProxyBox>& boxes) {
+        Measures best;
+        double bestScale = kTetrahedronScales[0];
+        const bool lighter = !boxes.empty() && 4 * boxes.size() < std::size_t(result.levels.back().faces);
+        for (double scale : kTetrahedronScales) {
+            if (!lighter)
+                break;
+            detail::replaceByProxies(m, detail::grownBoxes(boxes, scale), appendTetrahedron<MeshType>);
+            const Measures measured = measure(m);
+            if (scale == kTetrahedronScales[0] || measured.distance.max() < best.distance.max()) {
+                best = measured;
+                bestScale = scale;
+            }
+        }
+        detail::replaceByProxies(m, detail::grownBoxes(boxes, bestScale), appendTetrahedron<MeshType>);
+        char line[96] = "";
+        if (bestScale != 1.0)
+            std::snprintf(line, sizeof line, ", each in its box grown %.3g times", bestScale);
+        grownBy = line;
+        return best;
+    };
     if (options.proxyPixels > kTetrahedronPixels) {
         stats.relaxed.clear();
         stats.errorBound = detail::errorBudgetAt(dTetrahedron, view);
         const detail::ProxyBox whole = detail::modelBox(working);
-        detail::proxyPerComponent(working, stats.errorBound, stats, appendTetrahedron<MeshType>);
-        addProxy("tetrahedron", 4, nullptr);
+        const std::vector<detail::ProxyBox> boxes = detail::boxPerComponent(working, stats.errorBound, stats);
+        Measures measured = tetrahedraInto(working, boxes);
+        addProxy("tetrahedron", 4, &measured, grownBy);
         // Last, one tetrahedron for all of it (also when every part was below the budget).
         if (working.fn != 4 && !whole.box.IsNull()) {
             stats.relaxed.clear();
-            detail::replaceByProxies(working, {whole}, appendTetrahedron<MeshType>);
-            addProxy("model tetrahedron", 4, nullptr);
+            measured = tetrahedraInto(working, {whole});
+            addProxy("model tetrahedron", 4, &measured, grownBy);
         }
     }
 

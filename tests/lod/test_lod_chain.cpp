@@ -205,7 +205,8 @@ TEST(LodChain, TheFarthestLevelIsOutwardTetrahedra)
     for (const auto& component : components) {
         ASSERT_EQ(component.faces.size(), 4u);
         // Closed and outward: the signed volume (sum over faces of a . (b x c) / 6) is that
-        // of the tetrahedron inscribed in the component's box, a third of the box's.
+        // of the tetrahedron inscribed in a box, a third of the box's, whether that box is
+        // the part's or the part's grown (kTetrahedronScales).
         double volume = 0;
         for (const auto* f : component.faces) {
             const vcg::Point3d a = vcg::Point3d::Construct(f->cP(0)), b = vcg::Point3d::Construct(f->cP(1)),
@@ -305,4 +306,27 @@ TEST(LodChain, ATrimmedBoxLeavesOutAThinBladeStickingOut)
     EXPECT_DOUBLE_EQ(tenth.max[2], 4.0);
     EXPECT_GT(tenth.min[0], 0.0);
     EXPECT_LT(tenth.max[0], 40.0);
+}
+
+// Inscribed in a cube, a tetrahedron leaves four corners a third of the diagonal off; grown
+// 1.5 times about the centre, its missing corners and its own vertices stand a quarter off,
+// and it serves from a quarter closer. The chain measures the sizes it tries and keeps that.
+TEST(LodChain, ACubesTetrahedronIsGrownToStandAQuarterOfTheDiagonalOff)
+{
+    CadBuilder b;
+    stripPlate(b, 40, 40, 40, 8);
+    Chain c(b);
+    ASSERT_TRUE(c.result.ok()) << c.result.error;
+    const LodLevel& last = c.result.levels.back();
+    ASSERT_EQ(last.faces, 4);
+    EXPECT_NEAR(last.hausdorffMax / c.result.modelSize, 0.25, 0.01);
+    const std::vector<std::string>& said = c.result.steps.back().relaxed;
+    EXPECT_TRUE(std::any_of(said.begin(), said.end(),
+                            [](const std::string& line) { return line.find("grown 1.5 times") != std::string::npos; }));
+    // Its vertices stand outside the cube, a quarter of the diagonal beyond its corners.
+    TestMesh& m = c.level(c.result.levels.size() - 1);
+    for (const auto& v : m.vert)
+        if (!v.IsD())
+            for (int axis = 0; axis < 3; ++axis)
+                EXPECT_NEAR(std::abs(v.cP()[axis] - 20.0), 30.0, 1e-9);
 }
