@@ -17,12 +17,43 @@
 #include <wrap/io_trimesh/import_ply.h>
 #include <wrap/io_trimesh/import_stl.h>
 
+#include <fstream>
+
 namespace cadlod::cli {
 namespace {
 
 bool endsWith(const std::string& s, const std::string& tail)
 {
     return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+std::string baseName(const std::string& path)
+{
+    const std::size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// vcglib's OBJ exporter names the file it writes in a header comment ("# Object NAME"):
+// here the temporary file, renamed into place afterwards. The temporary name is longer than
+// the output's (".NAME.tmp-XXXXXX", atomic_file.h), so the output's name, padded with
+// spaces, takes its place in the file without moving a byte.
+bool nameObjOutput(const std::string& temporary, const std::string& path)
+{
+    std::fstream file(temporary, std::ios::in | std::ios::out | std::ios::binary);
+    std::string head(512, '\0');
+    file.read(head.data(), std::streamsize(head.size()));
+    head.resize(std::size_t(file.gcount()));
+    file.clear();
+    const std::string written = baseName(temporary);
+    std::string name = baseName(path);
+    const std::string comment = "# Object " + written + "\n";
+    const std::size_t at = head.find(comment);
+    if (at == std::string::npos || name.size() > written.size())
+        return bool(file);
+    name.resize(written.size(), ' ');
+    file.seekp(std::streamoff(at + comment.size() - 1 - written.size()));
+    file.write(name.data(), std::streamsize(name.size()));
+    return bool(file.flush());
 }
 
 std::string lower(std::string s)
@@ -189,7 +220,9 @@ void saveMesh(const std::string& path, CoreMesh& m, const SaveSettings& settings
     if (ext == "ply")
         write = [&](const std::string& t) { return ExporterPLY<CoreMesh>::Save(m, t.c_str(), mask, true) == 0; };
     else if (ext == "obj")
-        write = [&](const std::string& t) { return ExporterOBJ<CoreMesh>::Save(m, t.c_str(), Mask::IOM_VERTNORMAL) == 0; };
+        write = [&](const std::string& t) {
+            return ExporterOBJ<CoreMesh>::Save(m, t.c_str(), Mask::IOM_VERTNORMAL) == 0 && nameObjOutput(t, path);
+        };
     else if (ext == "stl")
         write = [&](const std::string& t) { return ExporterSTL<CoreMesh>::Save(m, t.c_str(), true) == 0; };
     else

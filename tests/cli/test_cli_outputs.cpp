@@ -101,6 +101,10 @@ TEST(CliOutputs, SimplifyWritesPlyObjStlAndReportMeasuresIt)
         ASSERT_EQ(info.exitCode, 0) << ext << ": " << info.stderrText;
         EXPECT_NE(info.stdoutText.find("triangles"), std::string::npos);
     }
+    // The OBJ's header names the output, not the temporary file it was written as.
+    const std::string obj = readFile(dir + "/s.obj");
+    EXPECT_NE(obj.find("# Object s.obj "), std::string::npos) << obj.substr(0, 200);
+    EXPECT_EQ(obj.find(".tmp-"), std::string::npos) << obj.substr(0, 200);
     const CliRun report = runCadlod({"report", kDemo, dir + "/s.ply", "--unit", "mm", "--json", "--samples", "20000"});
     ASSERT_EQ(report.exitCode, 0) << report.stderrText;
     const nlohmann::json r = nlohmann::json::parse(report.stdoutText);
