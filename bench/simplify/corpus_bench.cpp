@@ -15,6 +15,8 @@
 //                [--far-field]             issue 13's far-field check, see below
 //                [--log]                   cadlod's log of every run (what gave way) to stderr
 //                [--part-borders]          cadlod keeps part borders (keepPartBorders, off by default)
+//                [--feature-penalty X] [--shading-weight X] [--large-face-weight X]
+//                                          cadlod's SimplifyParams of those names (tuning sweeps)
 //                [--meshes DIR]            every input and result as PLY (DIR/<part>_input.ply,
 //                                          DIR/<part>_<reduction>_<tool>.ply), to look into a loss
 // --raw writes every tool's row (one Markdown table); --images writes the shading
@@ -554,6 +556,9 @@ int main(int argc, char** argv)
         else if (key == "--far-field") farField = true;
         else if (key == "--log") log = true;
         else if (key == "--part-borders") cadlodParams.keepPartBorders = true;
+        else if (key == "--feature-penalty") cadlodParams.featurePenalty = std::stod(value());
+        else if (key == "--shading-weight") cadlodParams.shadingWeight = std::stod(value());
+        else if (key == "--large-face-weight") cadlodParams.largeFaceWeight = std::stod(value());
         else {
             std::fprintf(stderr, "unknown option %s (see the head of corpus_bench.cpp)\n", key.c_str());
             return 2;
