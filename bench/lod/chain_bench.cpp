@@ -3,7 +3,10 @@
 // its measured error), on VRML assemblies, PLY parts and the generated bench assembly.
 // Prints one Markdown table; with --plot DIR also writes DIR/<name>.dat (distance, faces
 // of each chain) for bench/lod/plot_chains.sh.
-//   chain_bench [--assembly-segments N] [--shaft TRIANGLES] [--plot DIR] [--samples N] FILE...
+//   chain_bench [--assembly-segments N] [--shaft TRIANGLES] [--plot DIR] [--samples N] [--levels] [--verify] FILE...
+// --verify re-measures each of cadlod's levels with other random points, 20 per input face
+// (at least a million) per side, and prints the worst projected error found that way (with
+// --levels, each level's: forward and backward distance beside the chain's own figure).
 #include "cad_meshes.h"
 #include "peer_meshopt.h"
 #include "test_mesh.h"
@@ -34,9 +37,44 @@ double secondsSince(std::chrono::steady_clock::time_point t0)
 struct Chain {
     std::vector<LodLevel> levels;
     double seconds = 0;
+    double verifiedPixels = 0;  // --verify: the largest projected error re-measured independently
 };
 
-Chain cadlodChain(TestMesh& input, const LodChainOptions& options)
+// Each kept level of cadlod's chain measured again against level 0 with other random
+// points (seeds the chain does not use) and kVerifySamplesPerFace times as many per side as
+// the larger mesh has faces (at least kVerifyMinSamples), every face's centroid and edge
+// midpoints on the level's side too: the largest error it projects to where it is first
+// drawn, in pixels. What a user's own Hausdorff tool would find.
+constexpr std::size_t kVerifySamplesPerFace = 20;
+constexpr std::size_t kVerifyMinSamples = 1000000;
+
+double verifiedPixels(TestMesh& input, const std::vector<std::unique_ptr<TestMesh>>& meshes,
+                      const std::vector<LodLevel>& levels, const ViewParams& view, bool printEach)
+{
+    detail::ClosestFace<TestMesh> toInput(input);
+    double worst = 0;
+    for (const LodLevel& l : levels) {
+        if (l.level == 0)
+            continue;
+        for (const auto& m : meshes) {
+            if (!m || !hasLodLevel(*m) || lodLevelHandle(*m)().level != l.level || m->fn != l.faces)
+                continue;
+            const std::size_t n = std::max(kVerifyMinSamples, kVerifySamplesPerFace * std::size_t(input.fn));
+            detail::ClosestFace<TestMesh> toLevel(*m);
+            const double forward = oneSidedHausdorff(input, toLevel, n, 11).max;
+            const double backward = oneSidedHausdorff(*m, toInput, n, 12, nullptr, {}, 1, true).max;
+            const double tanHalf = std::tan(0.5 * view.fovYDegrees * M_PI / 180.0);
+            const double px = std::max(forward, backward) * view.viewportHeightPx / (2.0 * l.switchOut * tanHalf);
+            if (printEach)
+                std::printf("    level %2d re-measured: %g and %g model units (the chain's %g), %.3f px where first drawn\n",
+                            l.level, forward, backward, l.hausdorffMax, px);
+            worst = std::max(worst, px);
+        }
+    }
+    return worst;
+}
+
+Chain cadlodChain(TestMesh& input, const LodChainOptions& options, bool verify = false, bool printEach = false)
 {
     std::vector<std::unique_ptr<TestMesh>> meshes;
     TestMesh scratch;
@@ -50,6 +88,8 @@ Chain cadlodChain(TestMesh& input, const LodChainOptions& options)
     if (!r.ok())
         std::fprintf(stderr, "cadlod chain: %s\n", r.error.c_str());
     c.levels = r.levels;
+    if (verify && r.ok())
+        c.verifiedPixels = verifiedPixels(input, meshes, r.levels, options.view, printEach);
     return c;
 }
 
@@ -148,6 +188,7 @@ int main(int argc, char** argv)
     bool withMeshopt = true;  // its chain takes minutes on a 1M-triangle shaft
     bool twoThreads = false;  // cadlod's chain and the 90 % run on two threads (measuring beside collapsing, two halves)
     bool printLevels = false; // each level's error and range after its chain's row
+    bool verify = false;      // each cadlod level re-measured independently (verifiedPixels)
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--plot") && i + 1 < argc)
             plotDir = argv[++i];
@@ -163,9 +204,11 @@ int main(int argc, char** argv)
             twoThreads = true;
         else if (!std::strcmp(argv[i], "--levels"))
             printLevels = true;
+        else if (!std::strcmp(argv[i], "--verify"))
+            verify = true;
         else if (argv[i][0] == '-') {
             std::fprintf(stderr, "usage: chain_bench [--assembly-segments N] [--shaft TRIANGLES] [--plot DIR] "
-                                 "[--samples N] [--no-meshopt] [--two-threads] [--levels] FILE...\n");
+                                 "[--samples N] [--no-meshopt] [--two-threads] [--levels] [--verify] FILE...\n");
             return 2;
         } else
             files.push_back(argv[i]);
@@ -185,13 +228,15 @@ int main(int argc, char** argv)
         const double diagonal = liveDiagonal(input);
         const std::size_t meshoptSamples = samples ? samples : std::min<std::size_t>(input.fn, 2000000);
         const double single = ninetyPercentSeconds(input, twoThreads ? RunTogether(runOnTwoThreads) : RunTogether(runInSequence));
-        const Chain ours = cadlodChain(input, options);
+        const Chain ours = cadlodChain(input, options, verify, printLevels);
         const bench::ChainFigures a = bench::chainFigures(ours.levels, diagonal, options.view);
         std::printf("| %s | %d | cadlod | %zu | %s | %.3f%% | %.3f%% | %.2f | %.2f | %.2f |\n", name.c_str(), input.fn,
                     ours.levels.size(), levelList(ours.levels).c_str(), 100 * a.pathShare, 100 * a.sceneShare,
                     a.worstPixels, ours.seconds, ours.seconds / single);
         if (printLevels)
             printLevelRanges(ours.levels, diagonal);
+        if (verify)
+            std::printf("    re-measured independently: worst %.3f px\n", ours.verifiedPixels);
         std::fflush(stdout);
         if (!withMeshopt)
             return;

@@ -3,7 +3,10 @@
 # assembly and board, and the KiCad VRML exports of the CAD corpus (made by
 # scripts/make_cad_corpus.sh when missing); writes the table and one plot of triangles
 # against distance per mesh (gnuplot, both chains).
-#   bench/lod/run_chains.sh [OUTDIR]        (default out/chains)
+# With --verify, each of cadlod's levels is also measured again independently (other
+# random points, 20 per input face and at least a million per side): OUTDIR/verify.md gives
+# the worst projected error found that way per mesh (about a quarter of an hour).
+#   bench/lod/run_chains.sh [OUTDIR] [--verify]        (default out/chains)
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 out="${1:-$ROOT/out/chains}"
@@ -21,3 +24,7 @@ mapfile -t wrl < <(find "$corpus" -name '*.wrl' | sort)
     "$ROOT/docs/sample/cad_assembly.wrl.gz" "${wrl[@]}"
 } | tee "$out/chains.md"
 bash "$ROOT/bench/lod/plot_chains.sh" "$out"
+if [ "${2:-}" = "--verify" ]; then
+  "$build/bench/lod/chain_bench" --no-meshopt --verify --assembly-segments 256 \
+    "$ROOT/docs/sample/cad_assembly.wrl.gz" "${wrl[@]}" | tee "$out/verify.md"
+fi

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 namespace cadlod {
@@ -208,13 +209,20 @@ inline std::uint32_t mortonOrder(double u, double v)
 
 }  // namespace detail
 
-template <class MeshFrom>
-HausdorffSamples hausdorffSamples(MeshFrom& from, std::size_t faceSamples, unsigned seed, bool everyFace = false)
+// `sampled(face)`, when given, picks the faces the random points and the per-face points are
+// spread over (the vertices are all taken): a face known to lie on the other surface stands
+// at distance 0 all over, and leaving it out puts its share of the points where they tell.
+template <class MeshFrom, class FaceFilter = std::nullptr_t>
+HausdorffSamples hausdorffSamples(MeshFrom& from, std::size_t faceSamples, unsigned seed, bool everyFace = false,
+                                  const FaceFilter& sampled = nullptr)
 {
     HausdorffSamples result;
     std::vector<vcg::Point3d>& points = result.points;
     result.vertexCount = from.vert.size();
-    const auto sources = detail::liveFaces(from);
+    auto sources = detail::liveFaces(from);
+    if constexpr (!std::is_same_v<FaceFilter, std::nullptr_t>)
+        sources.erase(std::remove_if(sources.begin(), sources.end(), [&](const auto* f) { return !sampled(*f); }),
+                      sources.end());
     if (sources.empty())
         return result;
     for (std::size_t i = 0; i < from.vert.size(); ++i)

@@ -221,3 +221,26 @@ TEST(LodBuilder, BadLevelListIsAClearErrorAndBuildsNothing)
     EXPECT_TRUE(b.levels.empty());
     EXPECT_FALSE(hasLodLevel(b.original));
 }
+
+// A level's faces that are level 0's stand at distance 0 all over: the points measuring the
+// level's side go to the faces that moved. A level identical to level 0 measures 0 both
+// ways; one with a single vertex moved measures that vertex's offset, whichever way.
+TEST(DistanceToLevelZero, FacesALevelKeptAsTheyWereAreNotSampled)
+{
+    TestMesh original;
+    vcg::tri::Sphere(original, 3);
+    TestMesh same, bumped;
+    vcg::tri::Append<TestMesh, TestMesh>::MeshCopy(same, original);
+    vcg::tri::Append<TestMesh, TestMesh>::MeshCopy(bumped, original);
+    const double diagonal = liveDiagonal(original);
+    DistanceToLevelZero<TestMesh> distance(original, 20000, diagonal, runInSequence);
+    const SymmetricHausdorff identical = distance(same, 20000);
+    EXPECT_LT(identical.forward.max, 1e-12);
+    EXPECT_LT(identical.backward.max, 1e-12);
+
+    bumped.vert[0].P() *= 1.05f;  // out by 5 % of the radius (1)
+    const SymmetricHausdorff h = distance(bumped, 20000);
+    EXPECT_NEAR(h.backward.max, 0.05, 1e-4);
+    EXPECT_GT(h.forward.max, 0.0);
+    EXPECT_LT(h.forward.max, 0.05);
+}

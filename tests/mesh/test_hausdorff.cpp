@@ -183,3 +183,25 @@ TEST(Hausdorff, LookingUpOnlyWhatCouldRaiseTheMaximumKeepsItExact)
         EXPECT_GT(full.max, 0.003 * 7.3);
     }
 }
+
+// A face filter spreads the random points and each face's centroid and edge midpoints over
+// the faces it picks only; every vertex is still taken.
+TEST(Hausdorff, SamplesGoOnlyToTheFacesTheFilterPicks)
+{
+    TestMesh sphere;
+    offsetSphere(sphere);
+    const float middle = sphere.bbox.Center()[2];
+    auto above = [&](const auto& f) {
+        return f.cP(0)[2] > middle && f.cP(1)[2] > middle && f.cP(2)[2] > middle;
+    };
+    std::size_t picked = 0;
+    for (const auto& f : sphere.face)
+        picked += above(f) ? 1 : 0;
+    ASSERT_GT(picked, 0u);
+    ASSERT_LT(picked, std::size_t(sphere.fn));
+    const HausdorffSamples samples = hausdorffSamples(sphere, 5000, 3, true, above);
+    ASSERT_EQ(samples.vertexIndex.size(), std::size_t(sphere.vn));
+    EXPECT_EQ(samples.points.size(), std::size_t(sphere.vn) + 5000 + 4 * picked);
+    for (std::size_t i = samples.vertexIndex.size(); i < samples.points.size(); ++i)
+        ASSERT_GT(samples.points[i][2], middle) << i;
+}
