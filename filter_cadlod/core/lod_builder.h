@@ -74,6 +74,23 @@ FaceKey faceKey(const FaceType& f)
     return key;
 }
 
+// The keys of `m`'s live faces, sorted.
+template <class MeshType>
+std::vector<FaceKey> sortedFaceKeys(MeshType& m)
+{
+    std::vector<FaceKey> keys;
+    for (const auto* f : liveFaces(m))
+        keys.push_back(faceKey(*f));
+    std::sort(keys.begin(), keys.end());
+    return keys;
+}
+
+template <class FaceType>
+bool hasFace(const std::vector<FaceKey>& sortedKeys, const FaceType& f)
+{
+    return std::binary_search(sortedKeys.begin(), sortedKeys.end(), faceKey(f));
+}
+
 }  // namespace detail
 
 // The symmetric Hausdorff distance of levels to level 0 (`original`). Level 0's sample
@@ -96,40 +113,34 @@ public:
 
     void prepare()
     {
-        if (!index_)
-            together_(
-                [&] {
-                    // Level 0's small faces, a fillet's or a thread's, each get their centroid and
-                    // edge midpoints where that adds at most a quarter of the points: the random
-                    // ones alone missed a level's largest distance by up to a fifth (chain_bench
-                    // --verify).
-                    points_ = hausdorffSamples(original_, samples_, 1, 4 * std::size_t(original_.fn) <= samples_);
-                },
-                [&] {
-                    index_.emplace(original_);
-                    for (const auto* f : detail::liveFaces(original_))
-                        facesOfLevelZero_.push_back(detail::faceKey(*f));
-                    std::sort(facesOfLevelZero_.begin(), facesOfLevelZero_.end());
-                });
+        if (index_)
+            return;
+        index_.emplace(original_);
+        facesOfLevelZero_ = detail::sortedFaceKeys(original_);
     }
 
-    // `backwardSamples`: random points on the level's faces that are not level 0's, besides
-    // its vertices and each such face's centroid and edge midpoints. A face a level kept as
-    // it was lies on level 0 all over; the points go to the faces that moved instead, so a
-    // fine level's few changed faces are sampled densely.
+    // Each side's points go only to the faces the other side does not have: a face a level
+    // kept as it was lies on level 0 all over, so a fine level's few changed faces, and the
+    // level-0 faces they replace, are sampled densely (spread evenly, the random points
+    // missed a level's largest distance by up to a quarter: chain_bench --verify). Level 0:
+    // `samples` random points besides its vertices, and each face's centroid and edge
+    // midpoints where that adds at most a quarter of the points (a fillet's or a thread's
+    // small faces); the level: `backwardSamples` random points besides its vertices and each
+    // such face's centroid and edge midpoints.
     SymmetricHausdorff operator()(MeshType& level, std::size_t backwardSamples)
     {
         prepare();
         SymmetricHausdorff h;
         together_(
             [&] {
-                h.forward = distancesToSurface(points_, detail::ClosestFace<MeshType>(level), nullptr, together_,
-                                               kMeanEvery);
+                const std::vector<detail::FaceKey> levelFaces = detail::sortedFaceKeys(level);
+                const auto gone = [&](const auto& f) { return !detail::hasFace(levelFaces, f); };
+                const bool everyFace = 4 * std::size_t(original_.fn) <= samples_;
+                h.forward = distancesToSurface(hausdorffSamples(original_, samples_, 1, everyFace, gone),
+                                               detail::ClosestFace<MeshType>(level), nullptr, together_, kMeanEvery);
             },
             [&] {
-                const auto moved = [&](const auto& f) {
-                    return !std::binary_search(facesOfLevelZero_.begin(), facesOfLevelZero_.end(), detail::faceKey(f));
-                };
+                const auto moved = [&](const auto& f) { return !detail::hasFace(facesOfLevelZero_, f); };
                 h.backward = distancesToSurface(hausdorffSamples(level, backwardSamples, 2, true, moved), *index_,
                                                 nullptr, together_, kMeanEvery);
             });
@@ -142,7 +153,6 @@ private:
     std::size_t samples_;
     double diagonal_;
     RunTogether together_;
-    HausdorffSamples points_;
     std::optional<detail::ClosestFace<MeshType>> index_;
     std::vector<detail::FaceKey> facesOfLevelZero_;  // sorted
 };
