@@ -17,6 +17,7 @@
 #include <wrap/io_trimesh/import_ply.h>
 #include <wrap/io_trimesh/import_stl.h>
 
+#include <filesystem>
 #include <fstream>
 
 namespace cadlod::cli {
@@ -25,12 +26,6 @@ namespace {
 bool endsWith(const std::string& s, const std::string& tail)
 {
     return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-std::string baseName(const std::string& path)
-{
-    const std::size_t slash = path.find_last_of('/');
-    return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
 // vcglib's OBJ exporter names the file it writes in a header comment ("# Object NAME"):
@@ -44,8 +39,8 @@ bool nameObjOutput(const std::string& temporary, const std::string& path)
     file.read(head.data(), std::streamsize(head.size()));
     head.resize(std::size_t(file.gcount()));
     file.clear();
-    const std::string written = baseName(temporary);
-    std::string name = baseName(path);
+    const std::string written = std::filesystem::path(temporary).filename().string();
+    std::string name = std::filesystem::path(path).filename().string();
     const std::string comment = "# Object " + written + "\n";
     const std::size_t at = head.find(comment);
     if (at == std::string::npos || name.size() > written.size())

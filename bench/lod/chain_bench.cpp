@@ -52,6 +52,8 @@ double verifiedPixels(TestMesh& input, const std::vector<std::unique_ptr<TestMes
                       const std::vector<LodLevel>& levels, const ViewParams& view, bool printEach)
 {
     detail::ClosestFace<TestMesh> toInput(input);
+    const std::size_t n = std::max(kVerifyMinSamples, kVerifySamplesPerFace * std::size_t(input.fn));
+    const double pixelsPerUnitAtOne = view.viewportHeightPx / (2.0 * detail::tanHalfFov(view));
     double worst = 0;
     for (const LodLevel& l : levels) {
         if (l.level == 0)
@@ -59,12 +61,10 @@ double verifiedPixels(TestMesh& input, const std::vector<std::unique_ptr<TestMes
         for (const auto& m : meshes) {
             if (!m || !hasLodLevel(*m) || lodLevelHandle(*m)().level != l.level || m->fn != l.faces)
                 continue;
-            const std::size_t n = std::max(kVerifyMinSamples, kVerifySamplesPerFace * std::size_t(input.fn));
             detail::ClosestFace<TestMesh> toLevel(*m);
             const double forward = oneSidedHausdorff(input, toLevel, n, 11).max;
             const double backward = oneSidedHausdorff(*m, toInput, n, 12, nullptr, {}, 1, true).max;
-            const double tanHalf = std::tan(0.5 * view.fovYDegrees * M_PI / 180.0);
-            const double px = std::max(forward, backward) * view.viewportHeightPx / (2.0 * l.switchOut * tanHalf);
+            const double px = std::max(forward, backward) * pixelsPerUnitAtOne / l.switchOut;
             if (printEach)
                 std::printf("    level %2d re-measured: %g and %g model units (the chain's %g), %.3f px where first drawn\n",
                             l.level, forward, backward, l.hausdorffMax, px);

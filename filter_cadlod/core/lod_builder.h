@@ -93,9 +93,10 @@ bool hasFace(const std::vector<FaceKey>& sortedKeys, const FaceType& f)
 
 }  // namespace detail
 
-// The symmetric Hausdorff distance of levels to level 0 (`original`). Level 0's sample
-// points and its index are made once for all levels: by prepare(), which a caller may run
-// beside other work, or by the first measure. `together` runs the two sides, and each
+// The symmetric Hausdorff distance of levels to level 0 (`original`). Level 0's index and
+// the keys of its faces are made once for all levels: by prepare(), which a caller may run
+// beside other work, or by the first measure; its sample points are drawn for each level,
+// on the faces that level no longer has. `together` runs the two sides, and each
 // side's chunks, at once where it can (hausdorff.h: the figures do not depend on it).
 template <class MeshType>
 class DistanceToLevelZero
@@ -113,10 +114,9 @@ public:
 
     void prepare()
     {
-        if (index_)
-            return;
-        index_.emplace(original_);
-        facesOfLevelZero_ = detail::sortedFaceKeys(original_);
+        if (!index_)
+            together_([&] { facesOfLevelZero_ = detail::sortedFaceKeys(original_); },
+                      [&] { index_.emplace(original_); });
     }
 
     // Each side's points go only to the faces the other side does not have: a face a level

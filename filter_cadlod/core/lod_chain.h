@@ -44,8 +44,10 @@
 #include <cmath>
 #include <cstdio>
 #include <deque>
+#include <iterator>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cadlod {
@@ -449,6 +451,18 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         Measures measured;
         double trim = 0.0;  // the share of area left out at each end (trimmedBox)
     } boxProxy;
+    // Of the proxies `make(m, k)` builds into `m` for k in [0, count), the one measuring
+    // closest (the first of equals): its k and its measures. `m` holds the last one tried.
+    auto closestProxy = [&](MeshType& m, std::size_t count, const auto& make) {
+        std::pair<std::size_t, Measures> best{0, Measures()};
+        for (std::size_t k = 0; k < count; ++k) {
+            make(m, k);
+            const Measures measured = measure(m);
+            if (k == 0 || measured.distance.max() < best.second.distance.max())
+                best = {k, measured};
+        }
+        return best;
+    };
     // The box per component is tried as the box of its vertices and trimmed of thin
     // protrusions (kBoxTrims); the one with the smallest measured error is kept.
     auto takeBox = [&] {
@@ -460,18 +474,15 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         if (progress)
             progress(100 * plannedLevels / (plannedLevels + 1), "Measuring the box proxy");
         const auto kept = detail::componentsToKeep(*boxProxy.mesh, stats.errorBound, stats);
-        std::vector<detail::ProxyBox> best;
-        for (double trim : kBoxTrims) {
-            std::vector<detail::ProxyBox> boxes = detail::proxyBoxes(*boxProxy.mesh, kept, trim);
-            detail::replaceByProxies(candidate, boxes, appendBox<MeshType>);
-            const Measures measured = measure(candidate);
-            if (trim == kBoxTrims[0] || measured.distance.max() < boxProxy.measured.distance.max()) {
-                boxProxy.trim = trim;
-                boxProxy.measured = measured;
-                best = std::move(boxes);
-            }
-        }
-        detail::replaceByProxies(*boxProxy.mesh, best, appendBox<MeshType>);
+        std::vector<std::vector<detail::ProxyBox>> trimmed;
+        for (double trim : kBoxTrims)
+            trimmed.push_back(detail::proxyBoxes(*boxProxy.mesh, kept, trim));
+        const auto [best, measured] = closestProxy(candidate, trimmed.size(), [&](MeshType& m, std::size_t k) {
+            detail::replaceByProxies(m, trimmed[k], appendBox<MeshType>);
+        });
+        boxProxy.trim = kBoxTrims[best];
+        boxProxy.measured = measured;
+        detail::replaceByProxies(*boxProxy.mesh, trimmed[best], appendBox<MeshType>);
         candidate.Clear();
     };
     auto boxServes = [&](double d) {
@@ -529,8 +540,11 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // where the model is a couple of pixels high, a tetrahedron in each box (the fewest
     // triangles that still enclose a volume), and then one for the whole model. Each
     // is drawn from where its measured error is within the pixel error, like any level.
+    auto lighterThanLastLevel = [&](std::size_t faces) {
+        return faces > 0 && faces < std::size_t(result.levels.back().faces);
+    };
     auto addProxy = [&](const std::string& what, int facesEach, const Measures* measured, const std::string& how = "") {
-        if (working.fn == 0 || working.fn >= result.levels.back().faces)
+        if (!lighterThanLastLevel(std::size_t(working.fn)))
             return;
         if (progress)
             progress(100 * plannedLevels / (plannedLevels + 1), ("Measuring the " + what + " proxy").c_str());
@@ -553,25 +567,19 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // addProxy would not keep them.
     std::string grownBy;
     auto tetrahedraInto = [&](MeshType& m, const std::vector<detail::ProxyBox>& boxes) {
-        Measures best;
-        double bestScale = kTetrahedronScales[0];
-        const bool lighter = !boxes.empty() && 4 * boxes.size() < std::size_t(result.levels.back().faces);
-        for (double scale : kTetrahedronScales) {
-            if (!lighter)
-                break;
-            detail::replaceByProxies(m, detail::grownBoxes(boxes, scale), appendTetrahedron<MeshType>);
-            const Measures measured = measure(m);
-            if (scale == kTetrahedronScales[0] || measured.distance.max() < best.distance.max()) {
-                best = measured;
-                bestScale = scale;
-            }
-        }
-        detail::replaceByProxies(m, detail::grownBoxes(boxes, bestScale), appendTetrahedron<MeshType>);
+        auto make = [&](MeshType& into, std::size_t k) {
+            detail::replaceByProxies(into, detail::grownBoxes(boxes, kTetrahedronScales[k]), appendTetrahedron<MeshType>);
+        };
+        std::pair<std::size_t, Measures> best{0, Measures()};
+        if (lighterThanLastLevel(4 * boxes.size()))
+            best = closestProxy(m, std::size(kTetrahedronScales), make);
+        make(m, best.first);
+        const double scale = kTetrahedronScales[best.first];
         char line[96] = "";
-        if (bestScale != 1.0)
-            std::snprintf(line, sizeof line, ", each in its box grown %.3g times", bestScale);
+        if (scale != 1.0)
+            std::snprintf(line, sizeof line, ", each in its box grown %.3g times", scale);
         grownBy = line;
-        return best;
+        return best.second;
     };
     if (options.proxyPixels > kTetrahedronPixels) {
         stats.relaxed.clear();
