@@ -189,6 +189,10 @@ struct CollapseContext : public vcg::BaseParameterClass {
     // Once started (far_field.h), every operation is ranked by the largest distance it opens
     // (farFieldPriority). Null: the session never reaches the far field.
     std::shared_ptr<FarFieldDistances<MeshType>> farField;
+    // A session held to a distance (an LOD chain's level, drawn on the strength of it)
+    // measures the faces a collapse makes back to this input surface (farFieldDistance).
+    // Null: toward a face target, where only the new vertex is measured back, to `surface`.
+    std::shared_ptr<InputSurface> farFieldSurface;
     bool inFarField() const { return farField && farField->started(); }
     // The priority of an operation in the far field: the distance it opens, squared, in
     // diagonals.
@@ -983,15 +987,41 @@ private:
     }
 
     // The largest distance the collapse to p opens (far_field.h): from the input's points
-    // of the faces it changes to the faces it makes, and from p to the input surface; once
-    // it reaches `enough`, the rest is not looked at (`farthest`: collapseError's).
+    // of the faces it changes to the faces it makes, and back to the input surface from the
+    // faces it makes where the session is held to a distance (farFieldSurface), else from p;
+    // once it reaches `enough`, the rest is not looked at (`farthest`: collapseError's).
+    // Toward a face target, measuring the faces' points too ranks a little better but
+    // makes a 99 % run much slower (docs/benchmarks.md).
     static double farFieldDistance(const Context& ctx, VertexType* v0, VertexType* v1, const vcg::Point3d& p,
                                    double enough, std::uint32_t& farthest)
     {
         const double forward = ctx.farField->collapseError(v0, v1, p, ctx.ring, enough, farthest);
-        if (!ctx.surface || forward >= enough)
+        if (forward >= enough)
             return forward;
-        return std::max(forward, ctx.surface->distance(p));
+        if (ctx.farFieldSurface)
+            return backFromNewFaces(*ctx.farFieldSurface, ctx.ring, p,
+                                    std::max(forward, ctx.farFieldSurface->distance(p)), enough);
+        return ctx.surface ? std::max(forward, ctx.surface->distance(p)) : forward;
+    }
+
+    // The largest distance from the faces (p, a, b) of `ring` to the input surface, as far as
+    // their centroids and the midpoints of their edges from p tell, or `known` where that is
+    // larger; from `enough` on, the rest is not looked at. A face that bridges a gap (a
+    // socket's mouth, a groove) stands off the input in its middle, though its corners lie on
+    // it: p alone said nothing of that, and a chain level measured twice the distance its
+    // collapses had been held to (docs/benchmarks.md).
+    static double backFromNewFaces(const InputSurface& surface, const std::vector<RingFace>& ring,
+                                   const vcg::Point3d& p, double known, double enough)
+    {
+        double largest = known;
+        for (const RingFace& f : ring) {
+            for (const vcg::Point3d& q : {(p + f.a + f.b) / 3.0, (p + f.a) / 2.0, (p + f.b) / 2.0}) {
+                if (largest >= enough)
+                    return largest;
+                largest = std::max(largest, surface.distanceBeyond(q, largest));
+            }
+        }
+        return largest;
     }
 
     vcg::Point3<ScalarType> target_;

@@ -79,6 +79,16 @@ public:
         return tree_.closest(p, maxDistance_, d) >= 0 ? d : 0.0;
     }
 
+    // The distance from p to the input surface where it is beyond `known`; otherwise some
+    // distance no larger than `known` (a search bounded by it prunes most of the tree).
+    double distanceBeyond(const vcg::Point3d& p, double known) const
+    {
+        double d = 0;
+        if (known > 0 && tree_.closest(p, known, d) >= 0)
+            return d;
+        return distance(p);
+    }
+
     // Face `face` (new: a tunnel's cap) lies where face `like` does: its search starts there.
     void adopt(std::size_t face, std::size_t like)
     {

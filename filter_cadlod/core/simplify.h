@@ -269,6 +269,8 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     if ((stats.targetFaces > 0 && stats.targetFaces < ctx.farFieldFloor) || params.farFieldWithinBound)
         ctx.farField = std::make_shared<FarFieldDistances<MeshType>>(
             m, params.farFieldWithinBound ? kBoundFarFieldPoints : std::size_t(0));
+    if (params.farFieldWithinBound)
+        ctx.farFieldSurface = ctx.surface ? ctx.surface : std::make_shared<InputSurface>(m, ctx.diagonal);
     ctx.clearRingChanges(m);
     ctx.faceCounter = &m.fn;
     ctx.vertexCounter = &m.vn;
