@@ -71,7 +71,7 @@ inline constexpr double kBoxTrims[] = {0.0, 0.02, 0.05, 0.1};
 inline constexpr double kChainFeaturePenaltyShare = 0.5;
 // Where the model is this many pixels high (its diagonal), the pieces go into the far field
 // (far_field.h): from there on they rank operations by the distance they open and are held
-// to the budget by it. Tried at 16, 32 and 64 on the chain bench (docs/benchmarks.md).
+// to the budget by it. Tried at 16 to 256 on the chain bench (docs/benchmarks.md).
 inline constexpr double kFarFieldPixels = 64.0;
 // Where the model is this many pixels high, a tetrahedron per component replaces its box.
 inline constexpr double kTetrahedronPixels = 2.0;
