@@ -244,3 +244,34 @@ TEST(DistanceToLevelZero, FacesALevelKeptAsTheyWereAreNotSampled)
     EXPECT_GT(h.forward.max, 0.0);
     EXPECT_LT(h.forward.max, 0.05);
 }
+
+// A level that kept none of level 0's faces is measured from points drawn on all of level
+// 0, drawn once for every such level: the same points a one-sided measure from level 0 with
+// the same seed finds, whichever coarse level comes first, and a finer level in between
+// (which kept some faces) does not change them.
+TEST(DistanceToLevelZero, CoarseLevelsAreMeasuredFromTheSamePointsOnAllOfLevelZero)
+{
+    TestMesh original, coarse, coarser, kept;
+    vcg::tri::Sphere(original, 4);
+    vcg::tri::Sphere(coarse, 2);
+    vcg::tri::Sphere(coarser, 1);
+    vcg::tri::Append<TestMesh, TestMesh>::MeshCopy(kept, original);
+    kept.vert[0].P() *= 1.05f;
+    const std::size_t samples = 20000;
+    const double diagonal = liveDiagonal(original);
+    auto fromAll = [&](TestMesh& level) {
+        return distancesToSurface(hausdorffSamples(original, samples, 1, 4 * std::size_t(original.fn) <= samples),
+                                  detail::ClosestFace<TestMesh>(level), nullptr, runInSequence,
+                                  DistanceToLevelZero<TestMesh>::kMeanEvery);
+    };
+    DistanceToLevelZero<TestMesh> distance(original, samples, diagonal, runInSequence);
+    for (TestMesh* level : {&coarser, &kept, &coarse, &coarser}) {
+        const HausdorffStats measured = distance(*level, samples).forward;
+        if (level == &kept)
+            continue;
+        const HausdorffStats expected = fromAll(*level);
+        EXPECT_EQ(measured.max, expected.max);
+        EXPECT_EQ(measured.mean, expected.mean);
+        EXPECT_EQ(measured.samples, expected.samples);
+    }
+}
