@@ -999,21 +999,20 @@ private:
         if (forward >= enough)
             return forward;
         if (ctx.farFieldSurface)
-            return backFromNewFaces(*ctx.farFieldSurface, ctx.ring, p,
-                                    std::max(forward, ctx.farFieldSurface->distance(p)), enough);
+            return backFromNewFaces(*ctx.farFieldSurface, ctx.ring, p, forward, enough);
         return ctx.surface ? std::max(forward, ctx.surface->distance(p)) : forward;
     }
 
-    // The largest distance from the faces (p, a, b) of `ring` to the input surface, as far as
-    // their centroids and the midpoints of their edges from p tell, or `known` where that is
-    // larger; from `enough` on, the rest is not looked at. A face that bridges a gap (a
-    // socket's mouth, a groove) stands off the input in its middle, though its corners lie on
-    // it: p alone said nothing of that, and a chain level measured twice the distance its
-    // collapses had been held to (docs/benchmarks.md).
+    // The largest distance from p and the faces (p, a, b) of `ring` to the input surface, as
+    // far as p, the faces' centroids and the midpoints of their edges from p tell, or `known`
+    // where that is larger; from `enough` on, the rest is not looked at. A face that bridges
+    // a gap (a socket's mouth, a groove) stands off the input in its middle, though its
+    // corners lie on it: p alone said nothing of that, and a chain level measured twice the
+    // distance its collapses had been held to (docs/benchmarks.md).
     static double backFromNewFaces(const InputSurface& surface, const std::vector<RingFace>& ring,
                                    const vcg::Point3d& p, double known, double enough)
     {
-        double largest = known;
+        double largest = std::max(known, surface.distanceBeyond(p, known));
         for (const RingFace& f : ring) {
             for (const vcg::Point3d& q : {(p + f.a + f.b) / 3.0, (p + f.a) / 2.0, (p + f.b) / 2.0}) {
                 if (largest >= enough)

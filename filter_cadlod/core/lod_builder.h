@@ -85,18 +85,24 @@ std::vector<FaceKey> sortedFaceKeys(MeshType& m)
     return keys;
 }
 
+inline bool hasKey(const std::vector<FaceKey>& sortedKeys, const FaceKey& key)
+{
+    return std::binary_search(sortedKeys.begin(), sortedKeys.end(), key);
+}
+
 template <class FaceType>
 bool hasFace(const std::vector<FaceKey>& sortedKeys, const FaceType& f)
 {
-    return std::binary_search(sortedKeys.begin(), sortedKeys.end(), faceKey(f));
+    return hasKey(sortedKeys, faceKey(f));
 }
 
 }  // namespace detail
 
 // The symmetric Hausdorff distance of levels to level 0 (`original`). Level 0's index and
 // the keys of its faces are made once for all levels: by prepare(), which a caller may run
-// beside other work, or by the first measure; its sample points are drawn for each level,
-// on the faces that level no longer has. `together` runs the two sides, and each
+// beside other work, or by the first measure; its sample points are drawn for each level
+// on the faces that level no longer has (once for all the levels that kept none of them).
+// `together` runs the two sides, and each
 // side's chunks, at once where it can (hausdorff.h: the figures do not depend on it).
 template <class MeshType>
 class DistanceToLevelZero
@@ -146,15 +152,14 @@ private:
     // The distances from level 0's points on the faces `level` no longer has. A level that
     // kept none of them (every coarse one) is measured from the points drawn on all of level
     // 0, the same random points each time: they are drawn once (on a million faces, drawing
-    // them again for every level took a tenth of a chain's time).
+    // them again for every level was a large share of a chain's time: docs/benchmarks.md).
     HausdorffStats fromLevelZero(MeshType& level)
     {
         const detail::ClosestFace<MeshType> closest(level);
         const std::vector<detail::FaceKey> levelFaces = detail::sortedFaceKeys(level);
         const bool everyFace = 4 * std::size_t(original_.fn) <= samples_;
-        const bool keptNone = std::none_of(levelFaces.begin(), levelFaces.end(), [&](const detail::FaceKey& key) {
-            return std::binary_search(facesOfLevelZero_.begin(), facesOfLevelZero_.end(), key);
-        });
+        const bool keptNone = std::none_of(levelFaces.begin(), levelFaces.end(),
+                                           [&](const detail::FaceKey& key) { return detail::hasKey(facesOfLevelZero_, key); });
         if (keptNone) {
             if (!onAllOfLevelZero_)
                 onAllOfLevelZero_ = hausdorffSamples(original_, samples_, 1, everyFace);
