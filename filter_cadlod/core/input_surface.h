@@ -79,13 +79,13 @@ public:
         return tree_.closest(p, maxDistance_, d) >= 0 ? d : 0.0;
     }
 
-    // The distance from p to the input surface where it is beyond `known`; otherwise some
-    // distance no larger than `known` (a search bounded by it prunes most of the tree).
+    // The distance from p to the input surface where it is beyond `known`; otherwise
+    // `known`. Most points lie within it, and any one face within it proves that: the walk
+    // stops there, where finding the closest would go on.
     double distanceBeyond(const vcg::Point3d& p, double known) const
     {
-        double d = 0;
-        if (known > 0 && tree_.closest(p, known, d) >= 0)
-            return d;
+        if (known > 0 && tree_.anyWithin(p, known) >= 0)
+            return known;
         return distance(p);
     }
 

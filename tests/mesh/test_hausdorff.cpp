@@ -205,3 +205,39 @@ TEST(Hausdorff, SamplesGoOnlyToTheFacesTheFilterPicks)
     for (std::size_t i = samples.vertexIndex.size(); i < samples.points.size(); ++i)
         ASSERT_GT(samples.points[i][2], middle) << i;
 }
+
+// The random points come face by face (lookups in a row then start near the face found
+// last), in the order of the faces, and each face's share is its area's, as drawn.
+TEST(Hausdorff, RandomPointsComeFaceByFaceInProportionToArea)
+{
+    TestMesh sphere;
+    offsetSphere(sphere);
+    const std::size_t n = 200000;
+    const HausdorffSamples samples = hausdorffSamples(sphere, n, 9);
+    ASSERT_EQ(samples.points.size(), std::size_t(sphere.vn) + n);
+    // The face each point lies on: the closest, with the point at distance 0.
+    detail::ClosestFace<TestMesh> closest(sphere);
+    std::vector<std::size_t> count(sphere.face.size(), 0);
+    std::size_t previous = 0, runs = 0;
+    for (std::size_t i = samples.vertexIndex.size(); i < samples.points.size(); ++i) {
+        double d = -1;
+        const auto* f = closest.find(samples.points[i], d);
+        ASSERT_NE(f, nullptr);
+        ASSERT_LT(d, 1e-5);
+        const std::size_t face = std::size_t(f - &sphere.face[0]);
+        ++count[face];
+        if (face != previous)
+            ++runs;
+        previous = face;
+    }
+    // About one run of points per face, not one per point (a point on an edge may be found
+    // on the face beside it).
+    EXPECT_LE(runs, 2 * sphere.face.size());
+    double total = 0;
+    for (const auto& f : sphere.face)
+        total += vcg::DoubleArea(f) / 2;
+    for (std::size_t k = 0; k < sphere.face.size(); ++k) {
+        const double expected = double(n) * vcg::DoubleArea(sphere.face[k]) / 2 / total;
+        EXPECT_NEAR(double(count[k]), expected, 6 * std::sqrt(expected) + 2) << k;
+    }
+}

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 using namespace cadlod;
 using namespace cadlod::test;
 
@@ -80,6 +82,35 @@ TEST(InputSurface, AFaceNearerTheFarSideOfAThinPlateIsTurnedAway)
     // From a hint (a top face of the plate) the answer is the same.
     for (std::size_t face = 0; face < m.face.size(); ++face)
         EXPECT_FALSE(surface.facesAlong(face, vcg::Point3d(5, 5, 0.05), up)) << face;
+}
+
+// The far field's back distance looks each point up only where it could lie beyond the
+// largest distance found so far: there it must be the point's distance to the surface, and
+// otherwise no more than that largest distance.
+TEST(InputSurface, DistanceBeyondIsExactBeyondWhatIsKnown)
+{
+    TestMesh m;
+    makePlate(m, true);
+    InputSurface surface(m, liveDiagonal(m));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> x(-2, 12), z(-2, 3);
+    int beyond = 0, within = 0;
+    for (int k = 0; k < 300; ++k) {
+        const vcg::Point3d p(x(rng), x(rng), z(rng));
+        const double d = surface.distance(p);
+        for (const double known : {0.0, 0.5 * d, 0.999 * d, 1.001 * d, 2 * d}) {
+            const double found = surface.distanceBeyond(p, known);
+            if (d > known) {
+                EXPECT_NEAR(found, d, 1e-12) << k << " known " << known;
+                ++beyond;
+            } else {
+                EXPECT_LE(found, known) << k;
+                ++within;
+            }
+        }
+    }
+    EXPECT_GT(beyond, 0);
+    EXPECT_GT(within, 0);
 }
 
 // Where surfaces touch (a chip standing on a board), a face on the contact plane follows
