@@ -135,7 +135,8 @@ public:
     // `enough`, the rest of the points are skipped. `farthest` names the point found
     // farthest, and a point it names already is measured first: the placements of one
     // collapse mostly share their farthest point, and with the largest distance known
-    // early most points stop at the first face within it.
+    // early most points stop at the first face within it. That face is tried first for the
+    // next point: a face's points come in a row and mostly lie under the same new face.
     template <class Ring>
     double collapseError(VertexType* v0, VertexType* v1, const vcg::Point3d& p, const Ring& ring, double enough,
                          std::uint32_t& farthest) const
@@ -143,12 +144,17 @@ public:
         const double enough2 = enough < std::sqrt(std::numeric_limits<double>::max()) ? enough * enough
                                                                                       : std::numeric_limits<double>::max();
         double largest2 = 0;
+        const std::size_t faces = ring.size();
+        std::size_t within = 0;  // the ring face the point before stopped at
         auto measure = [&](std::uint32_t i) {
             double nearest2 = std::numeric_limits<double>::max();
-            for (const auto& face : ring) {
-                nearest2 = std::min(nearest2, TriangleTree::triangleDistance2({p, face.a, face.b}, points_[i]));
-                if (nearest2 <= largest2)
+            for (std::size_t k = 0; k < faces; ++k) {
+                const std::size_t j = within + k < faces ? within + k : within + k - faces;
+                nearest2 = std::min(nearest2, TriangleTree::triangleDistance2({p, ring[j].a, ring[j].b}, points_[i]));
+                if (nearest2 <= largest2) {
+                    within = j;
                     return;  // cannot raise the largest
+                }
             }
             if (nearest2 < std::numeric_limits<double>::max()) {
                 largest2 = nearest2;

@@ -207,6 +207,53 @@ inline std::uint32_t mortonOrder(double u, double v)
     return spread(quantize(u)) | spread(quantize(v)) << 1;
 }
 
+// The index std::lower_bound finds in `cumulative` (the faces' cumulative areas) for a pick,
+// searched only between two entries of a guide table: for each of as many evenly spaced
+// values as there are faces, the first face whose cumulative area reaches it. A binary
+// search over every face for every point was a large share of a small model's LOD chain
+// (docs/benchmarks.md).
+class AreaGuide
+{
+public:
+    explicit AreaGuide(const std::vector<double>& cumulative) : cumulative_(cumulative)
+    {
+        const std::size_t n = cumulative.size();
+        total_ = n ? cumulative.back() : 0.0;
+        first_.resize(n + 2);
+        std::size_t k = 0;  // both rise: one pass (a binary search per entry costs what the picks save)
+        for (std::size_t j = 0; j < first_.size(); ++j) {
+            while (k < n && cumulative[k] < boundary(j))
+                ++k;
+            first_[j] = k;
+        }
+    }
+
+    std::size_t operator()(double pick) const
+    {
+        const std::size_t last = first_.size() - 2;
+        std::size_t j = total_ > 0 ? std::size_t(std::clamp(pick / total_ * double(last), 0.0, double(last))) : 0;
+        // The division may round across a boundary: step to the bucket that holds the pick.
+        while (j > 0 && boundary(j) > pick)
+            --j;
+        while (j < last && boundary(j + 1) <= pick)
+            ++j;
+        const auto begin = cumulative_.begin() + std::ptrdiff_t(first_[j]);
+        const auto end = cumulative_.begin() + std::ptrdiff_t(std::min(first_[j + 1] + 1, cumulative_.size()));
+        return std::size_t(std::lower_bound(begin, end, pick) - cumulative_.begin());
+    }
+
+private:
+    double boundary(std::size_t j) const
+    {
+        const std::size_t last = first_.size() - 2;
+        return last ? total_ * double(j) / double(last) : 0.0;
+    }
+
+    const std::vector<double>& cumulative_;
+    std::vector<std::size_t> first_;  // first_[j]: the first face reaching boundary(j)
+    double total_ = 0.0;
+};
+
 // `picks` (each with a `face` below `faces` and an `order`) face by face, in face order,
 // and along each face by `order`: a counting sort by face, then a short sort per face (a
 // sort of all the points at once was a fifth of a small model's LOD chain).
@@ -265,15 +312,14 @@ HausdorffSamples hausdorffSamples(MeshFrom& from, std::size_t faceSamples, unsig
         double u, v;
         std::uint32_t order;  // along a face: points in a row lie near each other
     };
+    const detail::AreaGuide faceAt(cumulativeArea);
     std::vector<Sample> picks;
     picks.reserve(total > 0 ? faceSamples : 0);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (std::size_t i = 0; i < faceSamples && total > 0; ++i) {
         const double pick = unit(rng) * total;
-        const std::size_t k = std::min(sources.size() - 1,
-                                       std::size_t(std::lower_bound(cumulativeArea.begin(), cumulativeArea.end(), pick) -
-                                                   cumulativeArea.begin()));
+        const std::size_t k = std::min(sources.size() - 1, faceAt(pick));
         double u = unit(rng), v = unit(rng);
         if (u + v > 1) {
             u = 1 - u;

@@ -241,3 +241,36 @@ TEST(Hausdorff, RandomPointsComeFaceByFaceInProportionToArea)
         EXPECT_NEAR(double(count[k]), expected, 6 * std::sqrt(expected) + 2) << k;
     }
 }
+
+// The area-weighted pick of a face finds what a binary search over all the faces finds, for
+// picks on the guide's bucket boundaries, on faces' cumulative areas, and past the end, with
+// faces of zero area and of areas a million times apart.
+TEST(Hausdorff, AreaGuidePicksTheFaceABinarySearchPicks)
+{
+    std::mt19937_64 rng(21);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (const std::size_t n : {1, 2, 3, 7, 100, 1000}) {
+        std::vector<double> cumulative;
+        double total = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            const double r = unit(rng);
+            total += r < 0.1 ? 0.0 : (r < 0.2 ? 1e6 * r : r);
+            cumulative.push_back(total);
+        }
+        const detail::AreaGuide guide(cumulative);
+        std::vector<double> picks{0.0, total, std::nextafter(total, 0.0), 1.5 * total};
+        for (std::size_t j = 0; j <= n; ++j)
+            for (const double x : {total * double(j) / double(n), std::nextafter(total * double(j) / double(n), 0.0),
+                                   std::nextafter(total * double(j) / double(n), 2 * total)})
+                picks.push_back(x);
+        for (const double c : cumulative)
+            picks.insert(picks.end(), {c, std::nextafter(c, 0.0), std::nextafter(c, 2 * total)});
+        for (int k = 0; k < 2000; ++k)
+            picks.push_back(unit(rng) * total);
+        for (const double pick : picks) {
+            const std::size_t expected =
+                std::size_t(std::lower_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin());
+            ASSERT_EQ(guide(pick), expected) << "n " << n << " pick " << pick << " total " << total;
+        }
+    }
+}
