@@ -872,8 +872,11 @@ private:
         // A collapse that costs nothing must not make a sliver either: any later collapse
         // can do its work, and a sliver made for free is shape lost for nothing (the rings
         // shaft at half: 61 % -> 30 % slivers, stock 57 %). Both guards give way when the
-        // simplifier relaxes its shape limits (simplify.h).
-        const double minCompactness = ctx.shapeGuards ? ctx.params.minCompactness : 0.0;
+        // simplifier relaxes its shape limits (simplify.h), and in the far field of a session
+        // held to a distance (an LOD chain's level, drawn where the model is a few dozen pixels
+        // high): its distance alone judges it there, and a thin wall around a cavity (a jack's
+        // socket) keeps its opening with long faces across the rim.
+        const double minCompactness = ctx.shapeGuards && !ctx.heldToDistance() ? ctx.params.minCompactness : 0.0;
         const double floor = std::min(minCompactness, n.worstCompactness);
         const double minFree = minCompactness > 0 ? std::max(kSliver, minCompactness) : 0.0;
         const double freeFloor = std::min(minFree, n.worstCompactness);

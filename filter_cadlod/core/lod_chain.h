@@ -67,6 +67,10 @@ struct LodChainOptions {
 // of each axis (trimmedBox), and the one with the smallest measured error is kept: 0 is the
 // box of the component's vertices.
 inline constexpr double kBoxTrims[] = {0.0, 0.02, 0.05, 0.1};
+// The least compactness a collapse of a chain level may leave a face with (the simplifier's
+// shape guard, simplify_params.h), before the far field, where a session held to its
+// distance is judged by the distance alone (cad_edge_collapse.h).
+inline constexpr double kChainMinCompactness = 0.05;
 // The share of the simplifier's feature penalty that chain levels use (see buildLodChain).
 inline constexpr double kChainFeaturePenaltyShare = 0.5;
 // Where the model is this many pixels high (its diagonal), the pieces go into the far field
@@ -332,7 +336,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // with fewer faces; large faces weighing more serve shading at a fixed face count.
     params.largeFaceWeight = 0.0;
     params.shadingWeight = 0.0;  // so does pricing turned faces
-    params.minCompactness = 0.05;
+    params.minCompactness = kChainMinCompactness;
     // The pieces keep the input's points for the far field (kFarFieldPixels), whose levels
     // are what most of a scene's objects draw.
     params.farFieldWithinBound = true;

@@ -330,3 +330,34 @@ TEST(LodChain, ACubesTetrahedronIsGrownToStandAQuarterOfTheDiagonalOff)
             for (int axis = 0; axis < 3; ++axis)
                 EXPECT_NEAR(std::abs(v.cP()[axis] - 20.0), 30.0, 1e-9);
 }
+
+// A cup: a thin wall around a deep cavity, like a jack's socket. Its far levels must keep the
+// cavity open, with long faces across the rim. Held to its distance, a far-field level may
+// make faces less compact than the chain's shape guard allows (kChainMinCompactness): its
+// budget is a distance, and a level the guard kept heavier would be drawn farther out.
+TEST(LodChain, FarLevelsAreHeldToTheirDistanceNotToTheShapeGuard)
+{
+    CadBuilder b;
+    RevolveSpec spec;
+    spec.segments = 48;
+    revolve(b, {{0, 0}, {0, 10}, {30, 10}, {30, 9}, {2, 9}, {2, 0}}, spec);
+    LodChainOptions options;
+    Chain c(b, options);
+    ASSERT_TRUE(c.result.ok()) << c.result.error;
+    const double farFieldFrom = detail::distanceForPixels(c.result.modelSize, kFarFieldPixels, options.view);
+    double leastCompact = 1.0;
+    for (std::size_t k = 1; k < c.result.levels.size(); ++k) {
+        const LodLevel& level = c.result.levels[k];
+        const auto& lines = c.result.steps[k - 1].relaxed;
+        const bool proxy = std::any_of(lines.begin(), lines.end(),
+                                       [](const std::string& line) { return line.find(" proxy: ") != std::string::npos; });
+        if (level.switchOut >= farFieldFrom && !proxy)
+            leastCompact = std::min(leastCompact, c.result.compactness[k].min);
+        TestMesh& m = c.level(k);
+        const double error = std::max(oneSidedHausdorff(c.input, m, std::size_t(c.input.fn) * 16, 11).max,
+                                      oneSidedHausdorff(m, c.input, std::size_t(c.input.fn) * 16, 12).max);
+        EXPECT_LE(projectedPixels(error, level.switchOut, options.view), options.view.pixelThreshold * 1.05)
+            << "level " << k << " (" << m.fn << " faces)";
+    }
+    EXPECT_LT(leastCompact, kChainMinCompactness);
+}
