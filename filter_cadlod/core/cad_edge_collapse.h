@@ -692,7 +692,10 @@ private:
     }
 
     // The compactness face f of the ring takes with the new vertex at p, or kTurned if the
-    // normal checks refuse it (it turns too far, or away from the input surface).
+    // normal checks refuse it (it turns too far, or away from the input surface). Too far is
+    // the normal threshold, but a quarter turn in the far field of a session held to a
+    // distance: there the distance alone judges a collapse, and closing a thin wall's rim
+    // turns its faces further than the threshold lets a near level's do.
     static constexpr double kTurned = -1.0;
     static double faceAt(const Context& ctx, const RingFace& f, const vcg::Point3d& p)
     {
@@ -701,7 +704,8 @@ private:
         const double doubleArea = n.Norm();
         if (ctx.params.normalCheck) {
             const double len = doubleArea * f.normalLength;
-            if (f.normalLength > 0 && !(len > 0 && (n * f.normal) >= ctx.cosNormalLimit * len))
+            const double cosLimit = ctx.heldToDistance() ? 0.0 : ctx.cosNormalLimit;
+            if (f.normalLength > 0 && !(len > 0 && (n * f.normal) >= cosLimit * len))
                 return kTurned;
             if (n * f.original < 0)
                 return kTurned;  // turned away from the input surface

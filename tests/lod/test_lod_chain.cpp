@@ -59,6 +59,16 @@ CadBuilder assemblyBuilder()
     return b;
 }
 
+// A cup of `segments` around its axis: a wall 1 thick, 30 high, around a cavity 28 deep.
+CadBuilder cupBuilder(int segments)
+{
+    CadBuilder b;
+    RevolveSpec spec;
+    spec.segments = segments;
+    revolve(b, {{0, 0}, {0, 10}, {30, 10}, {30, 9}, {2, 9}, {2, 0}}, spec);
+    return b;
+}
+
 double projectedPixels(double error, double distance, const ViewParams& view)
 {
     return error * view.viewportHeightPx / (2.0 * distance * std::tan(0.5 * view.fovYDegrees * M_PI / 180.0));
@@ -337,12 +347,8 @@ TEST(LodChain, ACubesTetrahedronIsGrownToStandAQuarterOfTheDiagonalOff)
 // budget is a distance, and a level the guard kept heavier would be drawn farther out.
 TEST(LodChain, FarLevelsAreHeldToTheirDistanceNotToTheShapeGuard)
 {
-    CadBuilder b;
-    RevolveSpec spec;
-    spec.segments = 48;
-    revolve(b, {{0, 0}, {0, 10}, {30, 10}, {30, 9}, {2, 9}, {2, 0}}, spec);
     LodChainOptions options;
-    Chain c(b, options);
+    Chain c(cupBuilder(48), options);
     ASSERT_TRUE(c.result.ok()) << c.result.error;
     const double farFieldFrom = detail::distanceForPixels(c.result.modelSize, kFarFieldPixels, options.view);
     double leastCompact = 1.0;
@@ -360,4 +366,25 @@ TEST(LodChain, FarLevelsAreHeldToTheirDistanceNotToTheShapeGuard)
             << "level " << k << " (" << m.fn << " faces)";
     }
     EXPECT_LT(leastCompact, kChainMinCompactness);
+}
+
+// Held to its distance in the far field, a collapse may turn a face up to a quarter turn (never
+// over it, and never away from its input face), whatever the normal threshold that holds the
+// levels before it. The near levels of these cups never turn a face 60°, so their chains are
+// the same with a threshold of 60° and 89°. With 60° in the far field too, their far levels
+// differed.
+TEST(LodChain, FarLevelsDoNotDependOnTheNormalThreshold)
+{
+    for (const int segments : {16, 24}) {
+        LodChainOptions strict, lax;
+        strict.simplify.normalThreshold = 60;
+        lax.simplify.normalThreshold = 89;
+        Chain a(cupBuilder(segments), strict), b(cupBuilder(segments), lax);
+        ASSERT_TRUE(a.result.ok() && b.result.ok()) << a.result.error << b.result.error;
+        ASSERT_EQ(a.result.levels.size(), b.result.levels.size()) << segments << " segments";
+        for (std::size_t k = 0; k < a.result.levels.size(); ++k) {
+            EXPECT_EQ(a.result.levels[k].faces, b.result.levels[k].faces) << segments << " segments, level " << k;
+            EXPECT_EQ(a.result.levels[k].hausdorffMax, b.result.levels[k].hausdorffMax) << segments << " segments, level " << k;
+        }
+    }
 }
