@@ -527,6 +527,12 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
             continue;  // too little lighter than the last level to be worth one
         if (boxProxy.mesh && faces <= boxProxy.mesh->fn)
             break;  // no lighter than the box, which keeps every component's extent
+        if (!planned && between.taken) {
+            // The last halfway copy had no planned level after it that was lighter: it is the
+            // level for the distances since, not a copy to let go.
+            between.measured = measure(*between.mesh);
+            keep(between);
+        }
         take(planned ? pending : between);
     }
     together(measurePending, [] {});

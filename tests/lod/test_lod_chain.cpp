@@ -388,3 +388,25 @@ TEST(LodChain, FarLevelsDoNotDependOnTheNormalThreshold)
         }
     }
 }
+
+// A halfway copy (a factor of √ratio past a planned distance) that no planned level after it
+// made lighter by a tenth is the level for the distances up to the next copy: before, the next
+// copy took its place and the mesh was lost. Two drilled plates side by side: the sessions go
+// 192 -> 132 faces at a halfway distance, stay at 132 at the next planned one, and reach 112
+// only at the halfway distance after it.
+TEST(LodChain, AHalfwayCopyNoPlannedLevelLightensIsKept)
+{
+    CadBuilder b;
+    drilledPlate(b, 40, 2, 3, 16);
+    const int second = drilledPlate(b, 40, 2, 3, 16);
+    b.translate(second, 50, 0, 0);
+    Chain c(b);
+    ASSERT_TRUE(c.result.ok()) << c.result.error;
+    std::string faces;
+    bool between = false;
+    for (const LodLevel& level : c.result.levels) {
+        faces += " " + std::to_string(level.faces);
+        between |= level.faces > 112 && level.faces < 192;
+    }
+    EXPECT_TRUE(between) << "levels:" << faces;
+}
