@@ -37,7 +37,7 @@ void addPlacementParameters(RichParameterList& par)
     par.addParam(RichBool("preserveTopology", d.preserveTopology, "Preserve topology",
                           "Refuse collapses that change the genus or make the mesh non-manifold."));
     par.addParam(RichBool("closeTunnels", d.closeTunnels, "Close tunnels",
-                          "With Preserve topology: a tunnel (a through-hole) whose rim has shrunk to three edges may be cut and capped, priced like a feature break (logged)."));
+                          "With Preserve topology: a tunnel (a through-hole) whose rim has shrunk to three edges may be cut and capped, priced like a feature break (logged); in the far field of a screen-space LOD chain the topology gives way altogether (thin parts flatten into two-sided sheets, holes close). Off: both are kept."));
     par.addParam(RichBool("normalCheck", d.normalCheck, "Normal check",
                           "Refuse collapses that turn a face too far or against its input side; price like a feature break one that turns a face away from the input surface nearest to it."));
     par.addParam(RichFloat("normalThreshold", d.normalThreshold, "Normal threshold (degrees)",

@@ -381,7 +381,7 @@ public:
         }
         if (!feasible_)
             return false;
-        if (ctx.params.preserveTopology &&
+        if (ctx.params.preserveTopology && !topologyGivesWay(ctx) &&
             !vcg::tri::EdgeCollapser<MeshType, VertexPair>::LinkConditions(this->pos) &&
             !(ctx.inFarField() && foldsTetrahedron(this->pos.V(0), this->pos.V(1)))) {
             ++ctx.stats->rejectedTopology;
@@ -536,6 +536,13 @@ private:
     {
         heapPush(heap, HeapElem(new CadEdgeCollapse(VertexPair(a, b), static_cast<Context*>(pp)->mark, pp)));
     }
+
+    // In the far field of a session held to a distance (an LOD chain's level) the topology
+    // gives way like the other locks, unless tunnels are to be kept: the distance alone judges
+    // a collapse there. A thin part may flatten into a two-sided sheet (coincident faces of
+    // opposite orientation), a hole close, two touching parts collapse into one another, where
+    // the level's budget allows; an edge may then have more than two faces.
+    static bool topologyGivesWay(const Context& ctx) { return ctx.heldToDistance() && ctx.params.closeTunnels; }
 
     // A quadric minimum off the edge would turn a face away from the input surface: on a
     // convex surface the minimum lies outside the chords, and where another part fits

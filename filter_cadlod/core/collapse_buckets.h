@@ -118,7 +118,8 @@ public:
                 b.ctx.farField->start(b.mesh);
                 b.stats.relaxed.push_back("far field from " + std::to_string(b.mesh.fn) +
                                           " faces: collapses and removals ranked by the largest distance they "
-                                          "open, and held to the budget by it");
+                                          "open, and held to the budget by it alone (the shape guard, the normal "
+                                          "threshold and, unless tunnels are kept, the topology give way)");
             }
     }
 

@@ -145,14 +145,29 @@ TEST(CollapseBuckets, InTheFarFieldAPartIsRemovedOnlyWhereItsGapIsWithinTheDista
         EXPECT_EQ(d.removedAfterCollapse(10 * diagonal, 1e-4 * diagonal), 0);
         d.buckets.release();
     }
+    {
+        // Topology kept (tunnels too): collapses within that distance part the touching pair,
+        // which may then go, and only the board is left. (A part may also be cut in two at a
+        // tunnel first: no fewer removals than parts.)
+        SimplifyParams keepTopology = params;
+        keepTopology.closeTunnels = false;
+        Dealt d(keepTopology);
+        d.buckets.startFarField();
+        const double diagonal = liveDiagonal(d.model);
+        EXPECT_GE(d.removedAfterCollapse(1e-4 * diagonal, 10 * diagonal), d.copyPart);
+        EXPECT_EQ(d.partsLeft(), (std::set<int>{0}));
+        d.buckets.release();
+    }
+    // With the topology giving way in the far field (the default), the touching pair may
+    // collapse into one another instead: every other part goes.
     Dealt d(params);
     d.buckets.startFarField();
     const double diagonal = liveDiagonal(d.model);
-    // (A part may also be cut in two at a tunnel first: no fewer removals than parts.)
-    EXPECT_GE(d.removedAfterCollapse(1e-4 * diagonal, 10 * diagonal), d.copyPart);
-    // Only the board: collapses within that distance part the touching pair too, which may
-    // then go.
-    EXPECT_EQ(d.partsLeft(), (std::set<int>{0}));
+    EXPECT_GE(d.removedAfterCollapse(1e-4 * diagonal, 10 * diagonal), d.copyPart - 2);
+    const std::set<int> left = d.partsLeft();
+    EXPECT_TRUE(left.count(0));
+    for (int part : left)
+        EXPECT_TRUE(part == 0 || part == d.chipPart || part == d.copyPart) << "part " << part << " left";
     d.buckets.release();
 }
 
@@ -216,5 +231,41 @@ TEST(CollapseBuckets, InTheFarFieldTheFacesACollapseMakesStayWithinTheDistanceBo
         const HausdorffStats back = oneSidedHausdorff(result, block, 200000);
         EXPECT_LE(back.max, 1.05 * bound) << "bound " << 100 * share << " % of the diagonal, " << result.fn << " of "
                                           << block.fn << " faces left";
+    }
+}
+
+// In the far field of a session held to a distance the topology gives way like the other
+// locks: a drilled plate whose hole is within the bound (radius 3 of a 40 x 40 x 2 plate, the
+// bound a tenth of its diagonal) closes it and flattens into a two-sided sheet of four faces.
+// With tunnels kept (--keep-tunnels) its hole stays open. Both stay within the bound,
+// measured independently both ways.
+TEST(CollapseBuckets, InTheFarFieldTheTopologyGivesWayUnlessTunnelsAreKept)
+{
+    for (const bool keepTunnels : {false, true}) {
+        TestMesh plate;
+        {
+            CadBuilder b;
+            drilledPlate(b, 40, 2, 3, 16);
+            b.build(plate, true);
+        }
+        std::deque<TestMesh> meshes;
+        CollapseBuckets<TestMesh> buckets{[&]() -> TestMesh& { return meshes.emplace_back(); }};
+        SimplifyParams params;
+        params.farFieldWithinBound = true;
+        params.closeTunnels = !keepTunnels;
+        std::string error;
+        ASSERT_TRUE(buckets.prepare(plate, params, error)) << error;
+        buckets.startFarField();
+        const double bound = 0.1 * liveDiagonal(plate);
+        buckets.collapse(10 * liveDiagonal(plate), bound, runOnTwoThreads);
+        TestMesh result;
+        buckets.appendTo(result);
+        buckets.release();
+        if (keepTunnels)
+            EXPECT_GT(result.fn, 8) << "the hole stays open";
+        else
+            EXPECT_LE(result.fn, 4);
+        EXPECT_LE(oneSidedHausdorff(result, plate, 200000).max, 1.05 * bound) << result.fn << " faces";
+        EXPECT_LE(oneSidedHausdorff(plate, result, 200000).max, 1.05 * bound) << result.fn << " faces";
     }
 }
