@@ -413,20 +413,25 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         s.taken = false;
         addLevel(mesh, s.stats, s.measured);
     };
+    // The halfway copy as a level of its own (only the pending level is measured beside
+    // the collapses).
+    auto keepBetween = [&] {
+        between.measured = measure(*between.mesh);
+        keep(between);
+    };
     auto settlePending = [&] {
         if (!pending.taken)
             return;
         const double measured = pending.measured.distance.max();
         const double lastError = std::max(result.levels.back().hausdorffMax, kRelativeErrorFloor * result.modelSize);
         if (between.taken && measured > options.distanceRatio * lastError) {
-            between.measured = measure(*between.mesh);
             char line[200];
             std::snprintf(line, sizeof line,
                           "added halfway to the next level, whose error (%.4g %% of the diagonal) is more than the "
                           "distance ratio beyond the last level's (%.4g %%)",
                           100 * measured / result.modelSize, 100 * lastError / result.modelSize);
             between.stats.relaxed.push_back(line);
-            keep(between);
+            keepBetween();
         } else if (between.taken) {  // what gave way before it is the pending level's to tell
             auto& lines = pending.stats.relaxed;
             lines.insert(lines.begin(), between.stats.relaxed.begin(), between.stats.relaxed.end());
@@ -530,8 +535,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         if (!planned && between.taken) {
             // The last halfway copy had no planned level after it that was lighter: it is the
             // level for the distances since, not a copy to let go.
-            between.measured = measure(*between.mesh);
-            keep(between);
+            keepBetween();
         }
         take(planned ? pending : between);
     }
@@ -540,10 +544,8 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // A copy halfway past the last planned level has no level after it to overshoot: it is
     // the lightest mesh the sessions reached, and a level like any other (the selection of
     // useful levels drops it where the box serves better).
-    if (between.taken) {
-        between.measured = measure(*between.mesh);
-        keep(between);
-    }
+    if (between.taken)
+        keepBetween();
     pieces.release();
 
     // The proxies, each when it is lighter than the last level: the box per component, then,

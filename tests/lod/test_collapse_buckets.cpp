@@ -205,6 +205,21 @@ void pocketedBlock(TestMesh& m, double side, double height, double radius, doubl
     b.build(m, true);
 }
 
+// `result`: `input` after one far-field session of its pieces held to `bound` (the error
+// bound far above it), as an LOD chain's far level is made.
+void farFieldSession(TestMesh& input, SimplifyParams params, double bound, TestMesh& result)
+{
+    std::deque<TestMesh> meshes;
+    CollapseBuckets<TestMesh> buckets{[&]() -> TestMesh& { return meshes.emplace_back(); }};
+    params.farFieldWithinBound = true;
+    std::string error;
+    ASSERT_TRUE(buckets.prepare(input, params, error)) << error;
+    buckets.startFarField();
+    buckets.collapse(10 * liveDiagonal(input), bound, runOnTwoThreads);
+    buckets.appendTo(result);
+    buckets.release();
+}
+
 }  // namespace
 
 // In the far field a piece is held to the distance bound both ways: the faces a collapse
@@ -216,18 +231,9 @@ TEST(CollapseBuckets, InTheFarFieldTheFacesACollapseMakesStayWithinTheDistanceBo
     for (const double share : {0.02, 0.05, 0.1, 0.2}) {
         TestMesh block;
         pocketedBlock(block, 10, 8, 3, 6, 32);
-        std::deque<TestMesh> meshes;
-        CollapseBuckets<TestMesh> buckets{[&]() -> TestMesh& { return meshes.emplace_back(); }};
-        SimplifyParams params;
-        params.farFieldWithinBound = true;
-        std::string error;
-        ASSERT_TRUE(buckets.prepare(block, params, error)) << error;
-        buckets.startFarField();
         const double bound = share * liveDiagonal(block);
-        buckets.collapse(10 * liveDiagonal(block), bound, runOnTwoThreads);
         TestMesh result;
-        buckets.appendTo(result);
-        buckets.release();
+        farFieldSession(block, SimplifyParams(), bound, result);
         const HausdorffStats back = oneSidedHausdorff(result, block, 200000);
         EXPECT_LE(back.max, 1.05 * bound) << "bound " << 100 * share << " % of the diagonal, " << result.fn << " of "
                                           << block.fn << " faces left";
@@ -248,19 +254,11 @@ TEST(CollapseBuckets, InTheFarFieldTheTopologyGivesWayUnlessTunnelsAreKept)
             drilledPlate(b, 40, 2, 3, 16);
             b.build(plate, true);
         }
-        std::deque<TestMesh> meshes;
-        CollapseBuckets<TestMesh> buckets{[&]() -> TestMesh& { return meshes.emplace_back(); }};
         SimplifyParams params;
-        params.farFieldWithinBound = true;
         params.closeTunnels = !keepTunnels;
-        std::string error;
-        ASSERT_TRUE(buckets.prepare(plate, params, error)) << error;
-        buckets.startFarField();
         const double bound = 0.1 * liveDiagonal(plate);
-        buckets.collapse(10 * liveDiagonal(plate), bound, runOnTwoThreads);
         TestMesh result;
-        buckets.appendTo(result);
-        buckets.release();
+        farFieldSession(plate, params, bound, result);
         if (keepTunnels)
             EXPECT_GT(result.fn, 8) << "the hole stays open";
         else

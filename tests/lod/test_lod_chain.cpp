@@ -74,6 +74,14 @@ double projectedPixels(double error, double distance, const ViewParams& view)
     return error * view.viewportHeightPx / (2.0 * distance * std::tan(0.5 * view.fovYDegrees * M_PI / 180.0));
 }
 
+// The symmetric Hausdorff distance of `level` to `input` measured again, independently of the
+// chain: other seeds, `perFace` random points per input face each way.
+double remeasuredError(TestMesh& input, TestMesh& level, std::size_t perFace)
+{
+    const std::size_t samples = std::size_t(input.fn) * perFace;
+    return std::max(oneSidedHausdorff(input, level, samples, 11).max, oneSidedHausdorff(level, input, samples, 12).max);
+}
+
 }  // namespace
 
 TEST(LodChain, GoesDownToTheFarFieldInContiguousRanges)
@@ -102,10 +110,7 @@ TEST(LodChain, NoLevelIsDrawnBeyondItsPixelError)
     ASSERT_TRUE(c.result.ok()) << c.result.error;
     for (std::size_t k = 1; k < c.result.levels.size(); ++k) {
         TestMesh& m = c.level(k);
-        HausdorffStats forward = oneSidedHausdorff(c.input, m, std::size_t(c.input.fn) * 4, 11);
-        HausdorffStats backward = oneSidedHausdorff(m, c.input, std::size_t(c.input.fn) * 4, 12);
-        const double error = std::max(forward.max, backward.max);
-        EXPECT_LE(projectedPixels(error, c.result.levels[k].switchOut, options.view),
+        EXPECT_LE(projectedPixels(remeasuredError(c.input, m, 4), c.result.levels[k].switchOut, options.view),
                   options.view.pixelThreshold * 1.05)
             << "level " << k << " (" << m.fn << " faces)";
     }
@@ -269,10 +274,7 @@ TEST(LodChain, LargePiecesStartAsTwoHalvesWithTheSameChainOnTwoThreads)
             ASSERT_EQ(ma.vert[v].cP(), mb.vert[v].cP()) << "level " << i << " vertex " << v;
         if (i == 0)
             continue;
-        HausdorffStats forward = oneSidedHausdorff(one.input, ma, std::size_t(one.input.fn) * 4, 11);
-        HausdorffStats backward = oneSidedHausdorff(ma, one.input, std::size_t(one.input.fn) * 4, 12);
-        EXPECT_LE(projectedPixels(std::max(forward.max, backward.max), one.result.levels[i].switchOut,
-                                  sequential.view),
+        EXPECT_LE(projectedPixels(remeasuredError(one.input, ma, 4), one.result.levels[i].switchOut, sequential.view),
                   sequential.view.pixelThreshold * 1.05)
             << "level " << i << " (" << ma.fn << " faces)";
     }
@@ -360,9 +362,8 @@ TEST(LodChain, FarLevelsAreHeldToTheirDistanceNotToTheShapeGuard)
         if (level.switchOut >= farFieldFrom && !proxy)
             leastCompact = std::min(leastCompact, c.result.compactness[k].min);
         TestMesh& m = c.level(k);
-        const double error = std::max(oneSidedHausdorff(c.input, m, std::size_t(c.input.fn) * 16, 11).max,
-                                      oneSidedHausdorff(m, c.input, std::size_t(c.input.fn) * 16, 12).max);
-        EXPECT_LE(projectedPixels(error, level.switchOut, options.view), options.view.pixelThreshold * 1.05)
+        EXPECT_LE(projectedPixels(remeasuredError(c.input, m, 16), level.switchOut, options.view),
+                  options.view.pixelThreshold * 1.05)
             << "level " << k << " (" << m.fn << " faces)";
     }
     EXPECT_LT(leastCompact, kChainMinCompactness);
