@@ -34,6 +34,9 @@ std::vector<Component<MeshType>> connectedComponents(MeshType& m)
     using FaceType = typename MeshType::FaceType;
     std::vector<Component<MeshType>> out;
     std::vector<char> seen(m.face.size(), 0);
+    // A vertex's faces are walked once: walked again from each of its faces, the hub of a
+    // fan (a cylinder's cap, thousands of faces around one vertex) costs its valence squared.
+    std::vector<char> walked(m.vert.size(), 0);
     std::vector<FaceType*> stack;
     const bool parts = hasParts(m);
     typename MeshType::template PerFaceAttributeHandle<int> partOf;
@@ -57,6 +60,10 @@ std::vector<Component<MeshType>> connectedComponents(MeshType& m)
                 ++partVotes[partOf[f]];
             for (int j = 0; j < 3; ++j) {
                 c.box.Add(vcg::Point3d::Construct(f->cP(j)));
+                char& done = walked[std::size_t(f->V(j) - &m.vert[0])];
+                if (done)
+                    continue;
+                done = 1;
                 for (vcg::face::VFIterator<FaceType> vfi(f->V(j)); !vfi.End(); ++vfi) {
                     const std::size_t k = std::size_t(vfi.F() - &m.face[0]);
                     if (!vfi.F()->IsD() && !seen[k]) {
