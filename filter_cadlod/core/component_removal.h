@@ -12,9 +12,10 @@
 // rest of the model, the distance of its farthest vertex from the rest's surface: a small
 // part floating beside a body, a tip beyond it, leaves a gap that wide where it was. The
 // largest component is never removed; a maximum error forbids removing anything whose
-// removal distance exceeds it. Neither is a component with a vertex where another
-// component has one: that is a piece of a surface exported unwelded (a triangle soup,
-// faces split at a seam), and removing it opens a hole.
+// removal distance exceeds it. Components with a vertex where another has one (a surface
+// exported unwelded, a triangle soup, faces split at a seam, a screw's head meeting its
+// shank at a point) go together or not at all, as one touch group: removing one piece alone
+// opens a hole in the others. The group of the largest component stays.
 #pragma once
 
 #include "cad_edge_collapse.h"
@@ -42,7 +43,10 @@ public:
     using Context = CollapseContext<MeshType>;
 
     // Adds one removal per component but the largest (unless the context says the model's
-    // largest is in another mesh) to `heap` (not re-heapified).
+    // largest is in another mesh) to `heap` (not re-heapified). Components that touch (a
+    // vertex where another's stands) go together, as one removal of their touch group: one
+    // of them alone would open a hole in the others, all of them leave only the gap the
+    // group stands off the rest (a screw exported as a shank and a head meeting at a point).
     static void push(MeshType& m, Context& ctx, HeapType& heap)
     {
         const std::vector<Component<MeshType>> components = connectedComponents(m);
@@ -50,36 +54,43 @@ public:
             ctx.mayRemoveLargestComponent || components.empty() ? components.size() : components.size() - 1;
         if (removable == 0)
             return;  // a single part: nothing to find out about touching parts or gaps
-        const std::vector<bool> touching = touchingOthers(m, components);
+        const std::vector<int> group = touchGroups(m, components);
+        const int kept = removable < components.size() ? group.back() : -1;  // the largest's group
         const double penalty = std::max(1.0, ctx.params.featurePenalty);
         // Where the rest of the model is in other meshes (pieces simplified side by side),
         // the gap to it cannot be measured here: the size stands for it.
         RestOfModel rest(m, components, !ctx.mayRemoveLargestComponent);
-        for (std::size_t i = 0; i < removable; ++i) {
-            const Component<MeshType>& c = components[i];
-            if (ctx.exceedsBound(c.size(), c.size()))
-                break;
-            if (touching[i])
+        for (const std::vector<std::size_t>& members : groupMembers(group)) {
+            const int g = group[members.front()];
+            if (g == kept)
+                continue;
+            vcg::Box3d box;
+            for (std::size_t c : members)
+                box.Add(components[c].box);
+            const double size = box.IsNull() ? 0.0 : box.Diag();
+            if (ctx.exceedsBound(size, size))
                 continue;
             // (vcglib's visited bit is not free here: the collapse's Init leaves it set.)
             std::vector<VertexType*> vertices;
-            double weight = 0.0;
-            for (FaceType* f : c.faces)
-                for (int j = 0; j < 3; ++j)
-                    vertices.push_back(f->V(j));
+            for (std::size_t c : members)
+                for (FaceType* f : components[c].faces)
+                    for (int j = 0; j < 3; ++j)
+                        vertices.push_back(f->V(j));
             std::sort(vertices.begin(), vertices.end());
             vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+            double weight = 0.0;
             for (VertexType* v : vertices)
                 weight += ctx.quadrics.area(v) / 3.0;
             // In the far field a removal is ranked by the gap it leaves, as collapses are by
             // the distance they open there (far_field.h).
-            const double distance = rest.farthest(vertices, i, ctx.inFarField() && rest.measures() ? 0.0 : c.size());
+            const double distance = rest.farthest(vertices, [&](std::size_t c) { return group[c] == g; },
+                                                  ctx.inFarField() && rest.measures() ? 0.0 : size);
             if (ctx.exceedsBound(distance, distance))
                 continue;
             const double cost = penalty * weight * distance * distance;
             const double priority = ctx.inFarField() ? ctx.farFieldPriority(distance) : ctx.priority(cost, weight, 1.0);
-            heap.push_back(
-                HeapElem(new ComponentRemoval(std::move(vertices), c.size(), distance, c.name, ScalarType(priority))));
+            heap.push_back(HeapElem(new ComponentRemoval(std::move(vertices), int(members.size()), size, distance,
+                                                         nameOf(components, members), ScalarType(priority))));
         }
     }
 
@@ -94,14 +105,13 @@ public:
     void Execute(MeshType& m, vcg::BaseParameterClass* pp) override
     {
         Context& ctx = *static_cast<Context*>(pp);
-        VertexType* seed = liveVertex();
         Component<MeshType> c;
-        c.faces = facesConnectedTo(m, seed);
+        c.faces = facesConnectedTo(m, vertices_);
         if (ctx.inFarField())
             for (const FaceType* f : c.faces)
                 ctx.farField->dropPointsOf(f);
         removeComponent(m, c);
-        ++ctx.stats->removedComponents;
+        ctx.stats->removedComponents += pieces_;
         ctx.stats->largestRemovedComponent = std::max(ctx.stats->largestRemovedComponent, size_);
         ctx.recordError(distance_, distance_);
         const double percent = ctx.diagonal > 0 ? 100.0 / ctx.diagonal : 0.0;
@@ -131,19 +141,20 @@ private:
         // Whether distances to the rest are measured here (else farthest() is its floor).
         bool measures() const { return measure_; }
 
-        // The largest distance from the extreme vertices of `vertices` (of component
-        // `component`) to the nearest face of another component, or `floor` if that is
-        // larger. The vertex farthest from the rest is one of the component's extremes; and
+        // The largest distance from the extreme vertices of `vertices` (of the components
+        // `own` says are theirs) to the nearest face of another component, or `floor` if that
+        // is larger. The vertex farthest from the rest is one of the component's extremes; and
         // each search has to pass over every face of the component's own that lies nearer,
         // so searching from every vertex of a large component would take its size squared.
-        double farthest(const std::vector<VertexType*>& vertices, std::size_t component, double floor)
+        template <class Own>
+        double farthest(const std::vector<VertexType*>& vertices, const Own& own, double floor)
         {
             double farthest = floor;
             if (!measure_)
                 return farthest;
             if (tree_.empty())
                 index();
-            auto another = [&](std::size_t k) { return componentOf_[k] != component; };
+            auto another = [&](std::size_t k) { return !own(componentOf_[k]); };
             for (const VertexType* v : extremes(vertices)) {
                 const vcg::Point3d p = vcg::Point3d::Construct(v->cP());
                 double d = 0.0;
@@ -208,23 +219,38 @@ private:
         double maxDistance_ = 1.0;
     };
 
-    // Per component: whether one of its vertices stands exactly where a vertex of another
-    // component stands.
-    static std::vector<bool> touchingOthers(MeshType& m, const std::vector<Component<MeshType>>& components)
+    // The components of each touch group (`group`: per component, its group), smallest
+    // first within a group, groups in order of their smallest member.
+    static std::vector<std::vector<std::size_t>> groupMembers(const std::vector<int>& group)
     {
-        const std::vector<int> group = touchGroups(m, components);
-        std::vector<int> members(components.size(), 0);
-        for (int g : group)
-            ++members[std::size_t(g)];
-        std::vector<bool> touching(components.size());
-        for (std::size_t c = 0; c < components.size(); ++c)
-            touching[c] = members[std::size_t(group[c])] > 1;
-        return touching;
+        std::vector<std::vector<std::size_t>> members;
+        std::vector<int> slot(group.size(), -1);
+        for (std::size_t c = 0; c < group.size(); ++c) {
+            int& k = slot[std::size_t(group[c])];
+            if (k < 0) {
+                k = int(members.size());
+                members.emplace_back();
+            }
+            members[std::size_t(k)].push_back(c);
+        }
+        return members;
     }
 
-    ComponentRemoval(std::vector<VertexType*> vertices, double size, double distance, std::string name,
+    // What the log calls a touch group: its largest member's name, and how many more pieces
+    // touch it.
+    static std::string nameOf(const std::vector<Component<MeshType>>& components, const std::vector<std::size_t>& members)
+    {
+        std::string name = components[members.back()].name;
+        if (members.size() > 1)
+            name += " and " + std::to_string(members.size() - 1) + " piece" + (members.size() > 2 ? "s" : "") +
+                    " touching it";
+        return name;
+    }
+
+    ComponentRemoval(std::vector<VertexType*> vertices, int pieces, double size, double distance, std::string name,
                      ScalarType priority)
-        : vertices_(std::move(vertices)), size_(size), distance_(distance), name_(std::move(name)), priority_(priority)
+        : vertices_(std::move(vertices)), pieces_(pieces), size_(size), distance_(distance), name_(std::move(name)),
+          priority_(priority)
     {
     }
 
@@ -236,7 +262,8 @@ private:
         return nullptr;
     }
 
-    static std::vector<FaceType*> facesConnectedTo(MeshType& m, VertexType* seed)
+    // The live faces of the components that hold the live vertices among `seeds`.
+    static std::vector<FaceType*> facesConnectedTo(MeshType& m, const std::vector<VertexType*>& seeds)
     {
         std::vector<FaceType*> faces;
         std::vector<char> seen(m.vert.size(), 0);
@@ -246,8 +273,10 @@ private:
             s = 1;
             return first;
         };
-        std::vector<VertexType*> stack{seed};
-        visit(seed);
+        std::vector<VertexType*> stack;
+        for (VertexType* seed : seeds)
+            if (!seed->IsD() && visit(seed))
+                stack.push_back(seed);
         while (!stack.empty()) {
             VertexType* v = stack.back();
             stack.pop_back();
@@ -266,6 +295,7 @@ private:
     }
 
     std::vector<VertexType*> vertices_;
+    int pieces_;  // the components of its touch group
     double size_;
     double distance_;  // removal distance: the size, or the gap it leaves if wider
     std::string name_;

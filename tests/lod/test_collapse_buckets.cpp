@@ -119,12 +119,14 @@ TEST(CollapseBuckets, EveryComponentGoesWholeIntoOneBucketAndTouchingOnesShareIt
     EXPECT_TRUE(hasParts(all));
 }
 
-TEST(CollapseBuckets, OnlyTheModelsLargestComponentAndTouchingOnesAreNeverRemovedWhole)
+// The board stays; the chip and its touching copy go too, but only together (one alone would
+// open a hole in the other).
+TEST(CollapseBuckets, OnlyTheModelsLargestComponentIsNeverRemovedWholeAndTouchingOnesGoTogether)
 {
     Dealt d;
     // A bound far above the model's size: every removal is within it.
-    EXPECT_EQ(d.removedAfterCollapse(10 * liveDiagonal(d.model), 0.0), d.copyPart - 2);  // every other part
-    EXPECT_EQ(d.partsLeft(), (std::set<int>{0, d.chipPart, d.copyPart}));  // the board, the touching pair
+    EXPECT_EQ(d.removedAfterCollapse(10 * liveDiagonal(d.model), 0.0), d.copyPart);  // every part but the board
+    EXPECT_EQ(d.partsLeft(), (std::set<int>{0}));
     d.buckets.release();
 }
 
