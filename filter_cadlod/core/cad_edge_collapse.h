@@ -1026,12 +1026,13 @@ private:
     static double backFromNewFaces(const InputSurface& surface, const std::vector<RingFace>& ring,
                                    const vcg::Point3d& p, double known, double enough)
     {
-        double largest = std::max(known, surface.distanceBeyond(p, known));
+        InputSurface::RecentFaces recent;
+        double largest = std::max(known, surface.distanceBeyond(p, known, recent));
         for (const RingFace& f : ring) {
             for (const vcg::Point3d& q : {(p + f.a + f.b) / 3.0, (p + f.a) / 2.0, (p + f.b) / 2.0}) {
                 if (largest >= enough)
                     return largest;
-                largest = std::max(largest, surface.distanceBeyond(q, largest));
+                largest = std::max(largest, surface.distanceBeyond(q, largest, recent));
             }
         }
         return largest;

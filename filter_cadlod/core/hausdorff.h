@@ -116,29 +116,13 @@ public:
         return hint >= 0 ? faces_[std::size_t(hint)] : nullptr;
     }
 
-    // Faces found for the points just before: a point is most often near one of them.
-    struct RecentFaces {
-        std::array<std::int64_t, 4> face{-1, -1, -1, -1};
-        std::size_t next = 0;
-        void add(std::int64_t f)
-        {
-            face[next] = f;
-            next = (next + 1) % face.size();
-        }
-    };
+    using RecentFaces = TriangleTree::RecentHits;
 
-    // Whether some face lies within `radius` of p, trying the recent ones first (then the
-    // face found joins them): true proves that p's distance is at most `radius`.
+    // Whether some face lies within `radius` of p, trying the recent ones first: true proves
+    // that p's distance is at most `radius`.
     bool within(const vcg::Point3d& p, double radius, RecentFaces& recent) const
     {
-        for (const std::int64_t f : recent.face)
-            if (f >= 0 && std::size_t(f) < faces_.size() && tree_.distance(std::size_t(f), p) <= radius)
-                return true;
-        const std::int64_t i = tree_.anyWithin(p, radius);
-        if (i < 0)
-            return false;
-        recent.add(i);
-        return true;
+        return tree_.anyWithin(p, radius, recent) >= 0;
     }
 
     // The closest of the faces `accept` takes.

@@ -81,10 +81,13 @@ public:
 
     // The distance from p to the input surface where it is beyond `known`; otherwise
     // `known`. Most points lie within it, and any one face within it proves that: the walk
-    // stops there, where finding the closest would go on.
-    double distanceBeyond(const vcg::Point3d& p, double known) const
+    // stops there, where finding the closest would go on. Points come in a row and lie near
+    // each other (a new face's centroid and edge midpoints): the input faces found within for
+    // the ones before are tried first.
+    using RecentFaces = TriangleTree::RecentHits;
+    double distanceBeyond(const vcg::Point3d& p, double known, RecentFaces& recent) const
     {
-        if (known > 0 && tree_.anyWithin(p, known) >= 0)
+        if (known > 0 && tree_.anyWithin(p, known, recent) >= 0)
             return known;
         return distance(p);
     }

@@ -176,6 +176,31 @@ public:
         return -1;
     }
 
+    // The triangles found for the points just before: the next point most often lies
+    // near one of them, and one triangle test settles it where a walk would take dozens.
+    struct RecentHits {
+        std::array<std::int64_t, 4> triangle{-1, -1, -1, -1};
+        std::size_t next = 0;
+        void add(std::int64_t t)
+        {
+            triangle[next] = t;
+            next = (next + 1) % triangle.size();
+        }
+    };
+
+    // anyWithin, trying the recent hits first; a triangle the walk finds joins them.
+    std::int64_t anyWithin(const vcg::Point3d& p, double radius, RecentHits& recent) const
+    {
+        const double radius2 = radius * radius;
+        for (const std::int64_t t : recent.triangle)
+            if (t >= 0 && std::size_t(t) < triangles_.size() && triangleDistance2(triangle(std::size_t(t)), p) <= radius2)
+                return t;
+        const std::int64_t found = anyWithin(p, radius);
+        if (found >= 0)
+            recent.add(found);
+        return found;
+    }
+
     // Squared distance from p to the triangle (Ericson, Real-Time Collision Detection, 5.1.5).
     static double triangleDistance2(const Triangle& t, const vcg::Point3d& p)
     {

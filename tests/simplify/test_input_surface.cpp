@@ -86,7 +86,9 @@ TEST(InputSurface, AFaceNearerTheFarSideOfAThinPlateIsTurnedAway)
 
 // The far field's back distance looks each point up only where it could lie beyond the
 // largest distance found so far: there it must be the point's distance to the surface, and
-// otherwise no more than that largest distance.
+// otherwise no more than that largest distance. The faces found for the points before are
+// tried first (they are remembered across the points, as for a new face's points in a row),
+// and must not change the answer.
 TEST(InputSurface, DistanceBeyondIsExactBeyondWhatIsKnown)
 {
     TestMesh m;
@@ -95,11 +97,12 @@ TEST(InputSurface, DistanceBeyondIsExactBeyondWhatIsKnown)
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> x(-2, 12), z(-2, 3);
     int beyond = 0, within = 0;
+    InputSurface::RecentFaces recent;
     for (int k = 0; k < 300; ++k) {
         const vcg::Point3d p(x(rng), x(rng), z(rng));
         const double d = surface.distance(p);
         for (const double known : {0.0, 0.5 * d, 0.999 * d, 1.001 * d, 2 * d}) {
-            const double found = surface.distanceBeyond(p, known);
+            const double found = surface.distanceBeyond(p, known, recent);
             if (d > known) {
                 EXPECT_NEAR(found, d, 1e-12) << k << " known " << known;
                 ++beyond;
