@@ -198,11 +198,18 @@ struct CollapseContext : public vcg::BaseParameterClass {
     // diagonals.
     double farFieldPriority(double distance) const { return distance * distance / (diagonal * diagonal); }
     bool heldToDistance() const { return inFarField() && maxDistance > 0; }
+    // Before the far field, with the input's points dealt: ranked by the quadrics, but held
+    // to maxDistance by the distance each collapse opens too.
+    bool checksDistance() const { return farField && farField->dealt() && !farField->started() && maxDistance > 0; }
     // Whether an operation of this error, opening this distance, is beyond the session's
     // bound: the distance where it is held to one, else the error.
     bool exceedsBound(double error, double distance) const
     {
-        return heldToDistance() ? distance > maxDistance : maxErrorAbs > 0 && error > maxErrorAbs;
+        if (heldToDistance())
+            return distance > maxDistance;
+        if (checksDistance() && distance > maxDistance)
+            return true;
+        return maxErrorAbs > 0 && error > maxErrorAbs;
     }
     // An executed operation's error, or its distance where it is held to one (the bound it
     // was checked against, which an LOD chain learns from).
@@ -212,6 +219,8 @@ struct CollapseContext : public vcg::BaseParameterClass {
             largestDistance = std::max(largestDistance, distance);
         else
             largestError = std::max(largestError, error);
+        if (checksDistance())
+            largestDistance = std::max(largestDistance, distance);
     }
     double facingPenalty = 0.0;
     bool facingGaveWay = false;      // a collapse ran unchecked below farFieldFloor
@@ -417,10 +426,11 @@ public:
         if (v0->IsUserBit(ctx.bits.boundary))
             v1->SetUserBit(ctx.bits.boundary);
         ctx.quadrics.merge(v0, v1);
-        if (ctx.inFarField())
+        const bool points = ctx.farField && ctx.farField->dealt();
+        if (points)
             ctx.farField->takePointsAround(v0, v1);
         const CollapseCount deleted = collapseEdge(v0, v1, target_);
-        if (ctx.inFarField())
+        if (points)
             ctx.farField->dealPointsAround(v1);
         *ctx.faceCounter -= deleted.faces;
         *ctx.vertexCounter -= deleted.vertices;
@@ -933,6 +943,12 @@ private:
         free_ = cost <= flatFloor;
         if (ctx.exceedsBound(error_, distance_))
             return reject(stats.rejectedError);
+        if (ctx.checksDistance()) {  // once the quadric error is within its bound: the costlier test
+            std::uint32_t farthest = FarFieldDistances<MeshType>::kNoPoint;
+            distance_ = farFieldDistance(ctx, v0, v1, cand[best].p, ctx.maxDistance * (1 + 1e-9), farthest);
+            if (ctx.exceedsBound(error_, distance_))
+                return reject(stats.rejectedError);
+        }
         const double qualityThr = ctx.params.qualityThreshold;
         const double shape = qualityThr > 0 ? std::clamp(bestScore.meanCompactness / qualityThr, 0.02, 1.0) : 1.0;
         if (ctx.inFarField()) {

@@ -205,6 +205,11 @@ struct HalfSession {
         ctx.facingGaveWay = false;
         ctx.spareVertices.clear();  // no tunnel cuts: they add faces
         ctx.spareFaces.clear();
+        // Nor the input's points of an LOD chain's level (far_field.h): both halves would
+        // move them in one table. The halves are held to the quadric error alone, and the
+        // whole session deals the points again after them (CollapseBuckets::collapse).
+        if (ctx.farField && !ctx.farField->started())
+            ctx.farField = nullptr;
     }
     HalfSession(const HalfSession&) = delete;
     HalfSession& operator=(const HalfSession&) = delete;

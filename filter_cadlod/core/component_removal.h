@@ -107,7 +107,7 @@ public:
         Context& ctx = *static_cast<Context*>(pp);
         Component<MeshType> c;
         c.faces = facesConnectedTo(m, vertices_);
-        if (ctx.inFarField())
+        if (ctx.farField)
             for (const FaceType* f : c.faces)
                 ctx.farField->dropPointsOf(f);
         removeComponent(m, c);

@@ -111,13 +111,21 @@ public:
     }
 
     bool started() const { return started_; }
+    bool dealt() const { return dealt_; }
+
+    // Deals the points to the nearest live face of `m` and ranks by distance from here on.
+    void start(MeshType& m)
+    {
+        deal(m);
+        started_ = true;
+    }
 
     // Deals the points to the nearest live face of `m` (faces keep their index from here on).
-    void start(MeshType& m)
+    void deal(MeshType& m)
     {
         faceBase_ = m.face.empty() ? nullptr : &m.face[0];
         pointsOf_.assign(m.face.size(), {});
-        started_ = true;
+        dealt_ = true;
         const detail::ClosestFace<MeshType> closest(m);
         if (closest.empty())
             return;
@@ -209,7 +217,7 @@ public:
     // A removed face's points go with it.
     void dropPointsOf(const FaceType* f)
     {
-        if (started_)
+        if (dealt_)
             pointsOf_[index(f)].clear();
     }
 
@@ -242,6 +250,7 @@ private:
     std::vector<std::uint32_t> moving_;                  // taken before a collapse
     const FaceType* faceBase_ = nullptr;
     bool started_ = false;
+    bool dealt_ = false;
 };
 
 }  // namespace cadlod

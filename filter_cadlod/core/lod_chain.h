@@ -13,15 +13,18 @@
 // model (collapse_buckets.h: whole connected components, side by side), each for the whole
 // chain (the quadrics carry the whole history, so errors do not restart at each level);
 // there features (part borders too, when they are kept) and whole small components give
-// way as soon as breaking them costs less than the budget (simplify.h). From where the
-// model is kFarFieldPixels high, the pieces are in the far field (far_field.h): operations
-// are ranked by the largest distance they open and held to the budget by it, since the
-// quadrics' error no longer tells how far a few hundred faces stand from thousands. The
-// pieces together are then taken as level k and measured against level 0 (symmetric
-// Hausdorff) while the sessions go on to the next level (the caller's RunTogether may run
-// both at once); the ratio between the measured and the requested error steers the budgets
-// from the level after next, so a collapse error that underestimates the distance a viewer
-// sees is corrected level by level (in the far field, the ratio to the distance opened).
+// way as soon as breaking them costs less than the budget (simplify.h). Collapses are
+// ranked by their quadric error, but held to the budget by the distance they open too
+// (far_field.h: from level 0's points to the faces they make, and back from those faces to
+// level 0): how far the quadric error is from that distance varies from one collapse to
+// the next, and a bound on the quadric error alone had to allow for the worst of them. From
+// where the model is kFarFieldPixels high, the pieces are in the far field: operations are
+// ranked by that distance too, since the quadrics' error no longer tells how far a few
+// hundred faces stand from thousands. The pieces together are then taken as level k and
+// measured against level 0 (symmetric Hausdorff) while the sessions go on to the next level
+// (the caller's RunTogether may run both at once); the ratio between the measured error
+// and the largest distance opened steers the distance bound from the level after next, so
+// an estimate that falls short of what a viewer sees is corrected level by level.
 // Where the model is `proxyPixels` high, a proxy is made: one axis-aligned box per remaining connected component (a box per part): the box of its
 // vertices or of its surface without what sticks out (a pin, a leg), whichever measures
 // closer. Collapse levels go on beyond it only while the box's measured error is still
@@ -361,6 +364,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     working.Clear();
     stats.ok = true;
     stats.diagonal = result.modelSize;
+    pieces.holdToDistanceBeforeFarField();
 
     const double dFill = detail::distanceForPixels(result.modelSize, view.viewportHeightPx, view);
     const double dProxy = detail::distanceForPixels(result.modelSize, options.proxyPixels, view);
@@ -439,9 +443,9 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         between.mesh->Clear();
         between.taken = false;
         const double collapseError = pending.stats.largestError;
-        if (pending.farField && measured > 0 && pending.largestDistance > 0)
+        if (measured > 0 && pending.largestDistance > 0)
             hausdorffPerFarFieldDistance = std::clamp(measured / pending.largestDistance, 1.0, 20.0);
-        else if (measured > 0 && collapseError > 0)
+        if (!pending.farField && measured > 0 && collapseError > 0)
             hausdorffPerCollapseError = std::clamp(measured / collapseError, 1.0, 20.0);
         keep(pending);
     };
@@ -518,12 +522,17 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
             std::snprintf(text, sizeof text, "Simplifying level %d, seen from %.3g model units", k + 1, d);
             progress(100 * std::min(k, plannedLevels) / (plannedLevels + 1), text);
         }
-        const double bound = budget / hausdorffPerCollapseError;
+        // Before the far field a collapse is held to the budget both by its quadric error and
+        // by the distance it opens (CollapseContext::checksDistance), which the measured error
+        // is steered by; only the halves of a large piece, which do not measure distances,
+        // are held to the quadric error scaled by the ratio learnt for it.
+        const double bound = farField ? budget / hausdorffPerCollapseError : budget;
+        const double halvesBound = budget / hausdorffPerCollapseError;
         const double distanceBound = budget / hausdorffPerFarFieldDistance;
         stats.targetFaces = 0;
         stats.errorBound = farField ? std::max(bound, distanceBound) : bound;
         const int before = pieces.faces();
-        together(measurePending, [&] { pieces.collapse(bound, distanceBound, together); });
+        together(measurePending, [&] { pieces.collapse(bound, distanceBound, together, halvesBound); });
         settlePending();
         pieces.addStatsTo(stats);
         const int previous = result.levels.back().faces;

@@ -222,7 +222,47 @@ void farFieldSession(TestMesh& input, SimplifyParams params, double bound, TestM
     buckets.release();
 }
 
+// `result`: `input` after one session of its pieces before the far field, with an error
+// bound far above the model and a distance bound of `bound`, held to it
+// (holdToDistanceBeforeFarField) or not, as an LOD chain's nearer levels are made.
+void midRangeSession(TestMesh& input, double bound, bool heldToDistance, TestMesh& result)
+{
+    std::deque<TestMesh> meshes;
+    CollapseBuckets<TestMesh> buckets{[&]() -> TestMesh& { return meshes.emplace_back(); }};
+    SimplifyParams params;
+    params.farFieldWithinBound = true;
+    std::string error;
+    ASSERT_TRUE(buckets.prepare(input, params, error)) << error;
+    if (heldToDistance)
+        buckets.holdToDistanceBeforeFarField();
+    buckets.collapse(10 * liveDiagonal(input), bound, runOnTwoThreads);
+    EXPECT_FALSE(buckets.inFarField());
+    buckets.appendTo(result);
+    buckets.release();
+}
+
 }  // namespace
+
+// Before the far field, an LOD chain's collapses are ranked by their quadric error but held
+// to the level's budget by the distance they open too: with the error bound far above the
+// model, the distance bound alone keeps the result within it, measured independently both
+// ways; without it the same session goes far beyond.
+TEST(CollapseBuckets, BeforeTheFarFieldCollapsesAreHeldToTheDistanceTheyOpen)
+{
+    for (const double share : {0.005, 0.02}) {
+        TestMesh block;
+        pocketedBlock(block, 10, 8, 3, 6, 32);
+        const double bound = share * liveDiagonal(block);
+        TestMesh held, free;
+        midRangeSession(block, bound, true, held);
+        midRangeSession(block, bound, false, free);
+        const double heldError = std::max(oneSidedHausdorff(held, block, 200000).max, oneSidedHausdorff(block, held, 200000).max);
+        const double freeError = std::max(oneSidedHausdorff(free, block, 200000).max, oneSidedHausdorff(block, free, 200000).max);
+        EXPECT_LT(held.fn, block.fn) << "share " << share;
+        EXPECT_LE(heldError, 1.05 * bound) << "share " << share << ", " << held.fn << " of " << block.fn << " faces left";
+        EXPECT_GT(freeError, 2 * bound) << "share " << share << ", " << free.fn << " faces left";
+    }
+}
 
 // In the far field a piece is held to the distance bound both ways: the faces a collapse
 // makes stand within it of the input surface in their middles too, not only at their
