@@ -20,9 +20,12 @@ std::vector<std::string> listLevels(const std::string& levels)
     return {mlxParam("RichEnum", "levelMode", "1"), mlxParam("RichString", "levels", levels)};
 }
 
+// The filter list is dumped to a file of the test's own: ctest runs this binary's tests side
+// by side, and two meshlabservers writing one file made one of them read it half written.
 bool lodFilterAvailable()
 {
-    const std::string dump = scratchDir("flt_lod_set") + "/filters.txt";
+    const std::string dump = scratchDir("flt_lod_set") + "/filters_" +
+                             ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".txt";
     const ServerRun run = runMeshlabServer({"-d", dump});
     return run.ok() && readText(dump).find(kLodFilter) != std::string::npos;
 }
