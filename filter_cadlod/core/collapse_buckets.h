@@ -99,7 +99,7 @@ public:
             if (holdBeforeFarField_ && b.ctx.farField && !b.ctx.farField->started() && b.mesh.fn > 0 &&
                 (halvesRan || !b.ctx.farField->dealt()))
                 b.ctx.farField->deal(b.mesh);
-            if (b.stats.halvesCollapses > before)
+            if (halvesRan)
                 b.stats.relaxed.push_back(std::to_string(b.stats.halvesCollapses - before) +
                                           " collapses made on two halves side by side first (a band of " +
                                           std::to_string(b.stats.halvesBandVertices) + " vertices between them)");

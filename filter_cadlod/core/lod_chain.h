@@ -526,8 +526,8 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         // by the distance it opens (CollapseContext::checksDistance), which the measured error
         // is steered by; only the halves of a large piece, which do not measure distances,
         // are held to the quadric error scaled by the ratio learnt for it.
-        const double bound = farField ? budget / hausdorffPerCollapseError : budget;
         const double halvesBound = budget / hausdorffPerCollapseError;
+        const double bound = farField ? halvesBound : budget;
         const double distanceBound = budget / hausdorffPerFarFieldDistance;
         stats.targetFaces = 0;
         stats.errorBound = farField ? std::max(bound, distanceBound) : bound;

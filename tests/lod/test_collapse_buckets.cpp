@@ -256,8 +256,8 @@ TEST(CollapseBuckets, BeforeTheFarFieldCollapsesAreHeldToTheDistanceTheyOpen)
         TestMesh held, free;
         midRangeSession(block, bound, true, held);
         midRangeSession(block, bound, false, free);
-        const double heldError = std::max(oneSidedHausdorff(held, block, 200000).max, oneSidedHausdorff(block, held, 200000).max);
-        const double freeError = std::max(oneSidedHausdorff(free, block, 200000).max, oneSidedHausdorff(block, free, 200000).max);
+        const double heldError = symmetricHausdorff(held, block, 200000).max();
+        const double freeError = symmetricHausdorff(free, block, 200000).max();
         EXPECT_LT(held.fn, block.fn) << "share " << share;
         EXPECT_LE(heldError, 1.05 * bound) << "share " << share << ", " << held.fn << " of " << block.fn << " faces left";
         EXPECT_GT(freeError, 2 * bound) << "share " << share << ", " << free.fn << " faces left";
