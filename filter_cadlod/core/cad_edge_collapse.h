@@ -397,6 +397,10 @@ public:
             TunnelCut<MeshType>::offer(ctx, this->pos.V(0), this->pos.V(1));
             return false;
         }
+        if (ctx.checksDistance() && !opensWithinBound(ctx)) {
+            ++ctx.stats->rejectedError;
+            return false;
+        }
         if (ctx.surface && !turnsAway_ && !free_) {
             if (*ctx.faceCount <= ctx.farFieldFloor)
                 ctx.facingGaveWay = true;
@@ -581,6 +585,25 @@ private:
             return false;
         }
         return true;
+    }
+
+    // Before the far field, with the input's points dealt: whether the collapse about to run
+    // opens no more than the session's distance bound. Its priority is its quadric error,
+    // which the distance does not change, so it is measured here, on the collapses that come
+    // to run, and not at every evaluation: most entries are evaluated again, their ring
+    // changed by a collapse nearby, before they come to the top.
+    bool opensWithinBound(Context& ctx)
+    {
+        VertexType* v0 = this->pos.V(0);
+        VertexType* v1 = this->pos.V(1);
+        gatherRing(ctx, v0, v1);
+        // Held to the bound and recorded into the session's largest distance only, a
+        // distance need not be told apart below the largest the session has opened (or the
+        // bound, where a level's bound is below an earlier one's).
+        std::uint32_t farthest = FarFieldDistances<MeshType>::kNoPoint;
+        distance_ = farFieldDistance(ctx, v0, v1, vcg::Point3d::Construct(target_), ctx.maxDistance * (1 + 1e-9),
+                                     farthest, std::min(ctx.largestDistance, ctx.maxDistance));
+        return !ctx.exceedsBound(error_, distance_);
     }
 
     // Checked last, on the collapse about to run only: a closest-face search or two per new
@@ -943,12 +966,6 @@ private:
         free_ = cost <= flatFloor;
         if (ctx.exceedsBound(error_, distance_))
             return reject(stats.rejectedError);
-        if (ctx.checksDistance()) {  // once the quadric error is within its bound: the costlier test
-            std::uint32_t farthest = FarFieldDistances<MeshType>::kNoPoint;
-            distance_ = farFieldDistance(ctx, v0, v1, cand[best].p, ctx.maxDistance * (1 + 1e-9), farthest);
-            if (ctx.exceedsBound(error_, distance_))
-                return reject(stats.rejectedError);
-        }
         const double qualityThr = ctx.params.qualityThreshold;
         const double shape = qualityThr > 0 ? std::clamp(bestScore.meanCompactness / qualityThr, 0.02, 1.0) : 1.0;
         if (ctx.inFarField()) {
@@ -1019,13 +1036,14 @@ private:
     // The largest distance the collapse to p opens (far_field.h): from the input's points
     // of the faces it changes to the faces it makes, and back to the input surface from the
     // faces it makes where the session is held to a distance (farFieldSurface), else from p;
-    // once it reaches `enough`, the rest is not looked at (`farthest`: collapseError's).
+    // once it reaches `enough`, the rest is not looked at (`farthest`: collapseError's);
+    // below `atLeast` distances are not told apart, and that is the least returned.
     // Toward a face target, measuring the faces' points too ranks a little better but
     // makes a 99 % run much slower (docs/benchmarks.md).
     static double farFieldDistance(const Context& ctx, VertexType* v0, VertexType* v1, const vcg::Point3d& p,
-                                   double enough, std::uint32_t& farthest)
+                                   double enough, std::uint32_t& farthest, double atLeast = 0.0)
     {
-        const double forward = ctx.farField->collapseError(v0, v1, p, ctx.ring, enough, farthest);
+        const double forward = ctx.farField->collapseError(v0, v1, p, ctx.ring, enough, farthest, atLeast);
         if (forward >= enough)
             return forward;
         if (ctx.farFieldSurface)

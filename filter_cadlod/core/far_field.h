@@ -145,13 +145,14 @@ public:
     // collapse mostly share their farthest point, and with the largest distance known
     // early most points stop at the first face within it. That face is tried first for the
     // next point: a face's points come in a row and mostly lie under the same new face.
+    // Distances below `atLeast` are not told apart: the least returned is that.
     template <class Ring>
     double collapseError(VertexType* v0, VertexType* v1, const vcg::Point3d& p, const Ring& ring, double enough,
-                         std::uint32_t& farthest) const
+                         std::uint32_t& farthest, double atLeast = 0.0) const
     {
         const double enough2 = enough < std::sqrt(std::numeric_limits<double>::max()) ? enough * enough
                                                                                       : std::numeric_limits<double>::max();
-        double largest2 = 0;
+        double largest2 = atLeast * atLeast;
         const std::size_t faces = ring.size();
         std::size_t within = 0;  // the ring face the point before stopped at
         auto measure = [&](std::uint32_t i) {
