@@ -112,6 +112,9 @@ public:
     // reports comes from every kMeanEvery-th point (hausdorff.h: the others are looked up in
     // full only when they could raise the maximum).
     static constexpr std::size_t kMeanEvery = 32;
+    // A level's changed faces are measured at points splitting each edge into this many
+    // pieces too (hausdorffSamples).
+    static constexpr int kLevelEdgePieces = 8;
 
     DistanceToLevelZero(MeshType& original, std::size_t samples, double diagonal, RunTogether together)
         : original_(original), samples_(samples), diagonal_(diagonal), together_(std::move(together))
@@ -144,7 +147,7 @@ public:
             [&] { h.forward = fromLevelZero(level); },
             [&] {
                 const auto moved = [&](const auto& f) { return !detail::hasFace(facesOfLevelZero_, f); };
-                h.backward = distancesToSurface(hausdorffSamples(level, backwardSamples, 2, true, moved), *index_,
+                h.backward = distancesToSurface(hausdorffSamples(level, backwardSamples, 2, true, moved, kLevelEdgePieces), *index_,
                                                 nullptr, together_, kMeanEvery);
             });
         h.diagonal = diagonal_;

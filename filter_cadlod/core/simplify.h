@@ -40,6 +40,10 @@ inline constexpr double kFacingOverFeature = 2.0;
 // measure to the distances opened steers the budgets (lod_chain.h), so a sample serves.
 inline constexpr std::size_t kBoundFarFieldPoints = 100000;
 
+// ...and the spacing of the points it adds along the input's edges, in diagonals
+// (far_field.h's forEachInputPoint).
+inline constexpr double kBoundFarFieldEdgeSpacing = 0.005;
+
 namespace detail {
 
 inline bool validateParams(const SimplifyParams& p, std::string& why)
@@ -268,7 +272,8 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     // (params.farFieldWithinBound): the input's points are kept for it (far_field.h).
     if ((stats.targetFaces > 0 && stats.targetFaces < ctx.farFieldFloor) || params.farFieldWithinBound)
         ctx.farField = std::make_shared<FarFieldDistances<MeshType>>(
-            m, params.farFieldWithinBound ? kBoundFarFieldPoints : std::size_t(0));
+            m, params.farFieldWithinBound ? kBoundFarFieldPoints : std::size_t(0),
+            params.farFieldWithinBound ? kBoundFarFieldEdgeSpacing * ctx.diagonal : 0.0);
     if (params.farFieldWithinBound)
         ctx.farFieldSurface = ctx.surface ? ctx.surface : std::make_shared<InputSurface>(m, ctx.diagonal);
     ctx.clearRingChanges(m);

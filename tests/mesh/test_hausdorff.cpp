@@ -274,3 +274,41 @@ TEST(Hausdorff, AreaGuidePicksTheFaceABinarySearchPicks)
         }
     }
 }
+
+// A long face whose surface underneath has a gap near one corner: the face stands off the
+// other surface most at a point of its edge next to that corner, where neither its
+// vertices, its centroid nor its edge midpoints lie. Points splitting each edge in eight
+// find it.
+TEST(Hausdorff, EdgePiecesFindTheLargestDistanceNextToACorner)
+{
+    TestMesh face, under;
+    vcg::tri::Allocator<TestMesh>::AddVertices(face, 3);
+    face.vert[0].P() = {0, 0, 0};
+    face.vert[1].P() = {40, 0, 0};
+    face.vert[2].P() = {0, 15, 0};
+    vcg::tri::Allocator<TestMesh>::AddFace(face, &face.vert[0], &face.vert[1], &face.vert[2]);
+    // The same face without the wedge from (33, 0) and (37, 0) to its third corner.
+    vcg::tri::Allocator<TestMesh>::AddVertices(under, 5);
+    under.vert[0].P() = {0, 0, 0};
+    under.vert[1].P() = {33, 0, 0};
+    under.vert[2].P() = {37, 0, 0};
+    under.vert[3].P() = {40, 0, 0};
+    under.vert[4].P() = {0, 15, 0};
+    vcg::tri::Allocator<TestMesh>::AddFace(under, &under.vert[0], &under.vert[1], &under.vert[4]);
+    vcg::tri::Allocator<TestMesh>::AddFace(under, &under.vert[2], &under.vert[3], &under.vert[4]);
+    const detail::ClosestFace<TestMesh> closest(under);
+
+    double dense = 0;  // along the edge (0,0)-(40,0), every 0.01
+    for (int i = 0; i <= 4000; ++i) {
+        double d = 0;
+        closest.find(vcg::Point3d(i * 0.01, 0, 0), d);
+        dense = std::max(dense, d);
+    }
+    ASSERT_GT(dense, 0.5);
+
+    const HausdorffStats without = distancesToSurface(hausdorffSamples(face, 0, 1, true), closest);
+    const HausdorffStats with = distancesToSurface(hausdorffSamples(face, 0, 1, true, nullptr, 8), closest);
+    EXPECT_LT(without.max, 0.1 * dense);  // every vertex, the centroid and the midpoints lie on it
+    EXPECT_GE(with.max, 0.6 * dense);     // (35, 0, 0), the seventh of eight pieces: 0.75 of 1.09
+    EXPECT_LE(with.max, dense + 1e-9);
+}
