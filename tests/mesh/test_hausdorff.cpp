@@ -18,6 +18,7 @@
 
 using namespace cadlod;
 using cadlod::test::TestMesh;
+using cadlod::test::addFaces;
 
 namespace {
 
@@ -282,20 +283,9 @@ TEST(Hausdorff, AreaGuidePicksTheFaceABinarySearchPicks)
 TEST(Hausdorff, EdgePiecesFindTheLargestDistanceNextToACorner)
 {
     TestMesh face, under;
-    vcg::tri::Allocator<TestMesh>::AddVertices(face, 3);
-    face.vert[0].P() = {0, 0, 0};
-    face.vert[1].P() = {40, 0, 0};
-    face.vert[2].P() = {0, 15, 0};
-    vcg::tri::Allocator<TestMesh>::AddFace(face, &face.vert[0], &face.vert[1], &face.vert[2]);
+    addFaces(face, {{0, 0, 0}, {40, 0, 0}, {0, 15, 0}}, {{0, 1, 2}});
     // The same face without the wedge from (33, 0) and (37, 0) to its third corner.
-    vcg::tri::Allocator<TestMesh>::AddVertices(under, 5);
-    under.vert[0].P() = {0, 0, 0};
-    under.vert[1].P() = {33, 0, 0};
-    under.vert[2].P() = {37, 0, 0};
-    under.vert[3].P() = {40, 0, 0};
-    under.vert[4].P() = {0, 15, 0};
-    vcg::tri::Allocator<TestMesh>::AddFace(under, &under.vert[0], &under.vert[1], &under.vert[4]);
-    vcg::tri::Allocator<TestMesh>::AddFace(under, &under.vert[2], &under.vert[3], &under.vert[4]);
+    addFaces(under, {{0, 0, 0}, {33, 0, 0}, {37, 0, 0}, {40, 0, 0}, {0, 15, 0}}, {{0, 1, 4}, {2, 3, 4}});
     const detail::ClosestFace<TestMesh> closest(under);
 
     double dense = 0;  // along the edge (0,0)-(40,0), every 0.01

@@ -22,13 +22,7 @@ namespace {
 // The unit square in z = 0 as two faces sharing the diagonal (0,0)-(1,1).
 void makeSquare(TestMesh& m)
 {
-    vcg::tri::Allocator<TestMesh>::AddVertices(m, 4);
-    m.vert[0].P() = {0, 0, 0};
-    m.vert[1].P() = {1, 0, 0};
-    m.vert[2].P() = {1, 1, 0};
-    m.vert[3].P() = {0, 1, 0};
-    vcg::tri::Allocator<TestMesh>::AddFace(m, &m.vert[0], &m.vert[1], &m.vert[2]);
-    vcg::tri::Allocator<TestMesh>::AddFace(m, &m.vert[0], &m.vert[2], &m.vert[3]);
+    addFaces(m, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
     vcg::tri::UpdateTopology<TestMesh>::VertexFace(m);
 }
 

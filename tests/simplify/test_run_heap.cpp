@@ -10,6 +10,7 @@
 
 using namespace cadlod;
 using cadlod::test::TestMesh;
+using cadlod::test::addFaces;
 
 namespace {
 
@@ -42,13 +43,7 @@ struct Session {
 
     Session()
     {
-        vcg::tri::Allocator<TestMesh>::AddVertices(m, 4);
-        m.vert[0].P() = {0, 0, 0};
-        m.vert[1].P() = {1, 0, 0};
-        m.vert[2].P() = {1, 1, 0};
-        m.vert[3].P() = {0, 1, 0};
-        vcg::tri::Allocator<TestMesh>::AddFace(m, &m.vert[0], &m.vert[1], &m.vert[2]);
-        vcg::tri::Allocator<TestMesh>::AddFace(m, &m.vert[0], &m.vert[2], &m.vert[3]);
+        addFaces(m, {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
         run.HeapSimplexRatio = 1;
         run.SetTargetSimplices(0);
     }
