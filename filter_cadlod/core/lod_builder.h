@@ -135,10 +135,11 @@ public:
     // `samples` random points besides its vertices, and each such face's centroid and edge
     // midpoints (on all of level 0, where that adds at most a quarter of the points: a
     // fillet's or a thread's small faces); the level: `backwardSamples` random points
-    // besides its vertices and each such face's centroid and edge midpoints. A level held to
-    // its budget by the distance each collapse opens from level 0's vertices and centroids
-    // (collapse_buckets.h) has its largest distance next to them as often as not: the edge
-    // midpoints find it where random points missed it by 7 % (the demo's level 3).
+    // besides its vertices and each such face's centroid, edge midpoints and the points that
+    // split its edges into kLevelEdgePieces. A level held to its budget by the distance each
+    // collapse opens from level 0's points (collapse_buckets.h) has its largest distance
+    // between those points as often as not: the edge midpoints find it where random points
+    // missed it by 7 % (the demo's level 3), the edge pieces next to a long face's corner.
     SymmetricHausdorff operator()(MeshType& level, std::size_t backwardSamples)
     {
         prepare();
