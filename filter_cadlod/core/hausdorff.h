@@ -379,26 +379,50 @@ DistanceSums measureMeanPoints(const std::vector<vcg::Point3d>& points, std::siz
     return sums;
 }
 
+// Points come in runs that lie close together (a face's points in a row, in order along it:
+// hausdorffSamples). No point of a run can raise `max` when some face lies within `max`
+// less the run's reach (half its box's diagonal) of the box's centre: each point is at most
+// that reach farther from that face. Then one test stands for the run: on a coarse level,
+// whose largest distance spans many of level 0's points, most runs.
+inline constexpr std::size_t kPointsPerRun = 64;
+
+template <class MeshTo>
+bool runWithin(const std::vector<vcg::Point3d>& points, std::size_t begin, std::size_t end,
+               const ClosestFace<MeshTo>& closest, double max, typename ClosestFace<MeshTo>::RecentFaces& recent)
+{
+    vcg::Box3d box;
+    for (std::size_t i = begin; i < end; ++i)
+        box.Add(points[i]);
+    const double reach = 0.5 * box.Diag() * (1 + 1e-9);  // the margin covers rounding
+    return reach < max && closest.within(box.Center(), max - reach, recent);
+}
+
 // The second pass: the largest distance of the other points that exceeds `floor` (a
 // distance the first pass found, so the maximum stays exact), or `floor`. A point is looked
 // up in full only when no face lies within the largest distance found so far
 // (ClosestFace::within): consecutive points lie near the same face, so most take one
-// triangle test. Starting from the first pass's largest distance over all the points, and
-// not from zero in each chunk, most of them pass that test.
+// triangle test, and a run of them that cannot raise it is passed over in one (runWithin).
+// Starting from the first pass's largest distance over all the points, and not from zero in
+// each chunk, most of them pass that test.
 template <class MeshTo>
 double raiseMaxByOtherPoints(const std::vector<vcg::Point3d>& points, std::size_t begin, std::size_t end,
                              const ClosestFace<MeshTo>& closest, std::size_t meanEvery, double floor)
 {
     double max = floor;
     typename ClosestFace<MeshTo>::RecentFaces recent;
-    for (std::size_t i = begin; i < end; ++i) {
-        if (countsForMean(i, begin, meanEvery) || closest.within(points[i], max, recent))
+    for (std::size_t run = begin; run < end; run += kPointsPerRun) {
+        const std::size_t runEnd = std::min(end, run + kPointsPerRun);
+        if (runWithin(points, run, runEnd, closest, max, recent))
             continue;
-        double d = 0.0;
-        std::int64_t found = -1;
-        closest.find(points[i], d, found);
-        recent.add(found);
-        max = std::max(max, d);
+        for (std::size_t i = run; i < runEnd; ++i) {
+            if (countsForMean(i, begin, meanEvery) || closest.within(points[i], max, recent))
+                continue;
+            double d = 0.0;
+            std::int64_t found = -1;
+            closest.find(points[i], d, found);
+            recent.add(found);
+            max = std::max(max, d);
+        }
     }
     return max;
 }

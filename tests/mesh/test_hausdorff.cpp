@@ -302,3 +302,38 @@ TEST(Hausdorff, EdgePiecesFindTheLargestDistanceNextToACorner)
     EXPECT_GE(with.max, 0.6 * dense);     // (35, 0, 0), the seventh of eight pieces: 0.75 of 1.09
     EXPECT_LE(with.max, dense + 1e-9);
 }
+
+// A run of points is passed over in one test only when none of them could raise the largest
+// distance: checked against vcglib's point-triangle distance on runs of points scattered
+// around points of a sphere, some with one point standing off it, for maxima below and above
+// their distances.
+TEST(Hausdorff, ARunOfPointsIsPassedOverOnlyWhenNoneCouldRaiseTheMaximum)
+{
+    TestMesh m;
+    offsetSphere(m);
+    const detail::ClosestFace<TestMesh> closest(m);
+    const HausdorffSamples onSphere = hausdorffSamples(m, 200, 5);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> scatter(-0.05, 0.05), lift(0.0, 0.4), chance(0.0, 1.0);
+    int passedOver = 0, lookedAt = 0;
+    for (const vcg::Point3d& centre : onSphere.points) {
+        std::vector<vcg::Point3d> run;
+        for (int i = 0; i < 64; ++i)
+            run.push_back(centre + vcg::Point3d(scatter(rng), scatter(rng), scatter(rng)));
+        if (chance(rng) < 0.3)  // one point stands off the surface
+            run[std::size_t(rng() % 64)] += vcg::Point3d(lift(rng), lift(rng), lift(rng));
+        double farthest = 0;
+        for (const vcg::Point3d& p : run)
+            farthest = std::max(farthest, bruteForce(m, p));
+        const double max = farthest * (0.5 + chance(rng));
+        detail::ClosestFace<TestMesh>::RecentFaces recent;
+        if (detail::runWithin(run, 0, run.size(), closest, max, recent)) {
+            ++passedOver;
+            EXPECT_LE(farthest, max * (1 + 1e-9)) << centre[0] << " " << centre[1] << " " << centre[2];
+        } else {
+            ++lookedAt;
+        }
+    }
+    EXPECT_GT(passedOver, 10);  // the test sees both outcomes
+    EXPECT_GT(lookedAt, 10);
+}
