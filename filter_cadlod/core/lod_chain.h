@@ -122,6 +122,11 @@ struct ProxyBox {
     vcg::Box3d box;
     int part = 0;
     vcg::Color4b color = vcg::Color4b(vcg::Color4b::Gray);
+
+    bool operator==(const ProxyBox& o) const
+    {
+        return box.min == o.box.min && box.max == o.box.max && part == o.part && color == o.color;
+    }
 };
 
 // The part and colour of component `c`'s first face, with the box `box`.
@@ -487,13 +492,21 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         if (progress)
             progress(100 * plannedLevels / (plannedLevels + 1), "Measuring the box proxy");
         const auto kept = detail::componentsToKeep(*boxProxy.mesh, stats.errorBound, stats);
+        // A trim that cuts nothing off makes the boxes a smaller one made: they are measured
+        // once (most parts have nothing sticking out).
         std::vector<std::vector<detail::ProxyBox>> trimmed;
-        for (double trim : kBoxTrims)
-            trimmed.push_back(detail::proxyBoxes(*boxProxy.mesh, kept, trim));
+        std::vector<double> trims;
+        for (double trim : kBoxTrims) {
+            std::vector<detail::ProxyBox> boxes = detail::proxyBoxes(*boxProxy.mesh, kept, trim);
+            if (std::find(trimmed.begin(), trimmed.end(), boxes) != trimmed.end())
+                continue;
+            trimmed.push_back(std::move(boxes));
+            trims.push_back(trim);
+        }
         const auto [best, measured] = closestProxy(candidate, trimmed.size(), [&](MeshType& m, std::size_t k) {
             detail::replaceByProxies(m, trimmed[k], appendBox<MeshType>);
         });
-        boxProxy.trim = kBoxTrims[best];
+        boxProxy.trim = trims[best];
         boxProxy.measured = measured;
         detail::replaceByProxies(*boxProxy.mesh, trimmed[best], appendBox<MeshType>);
         candidate.Clear();
