@@ -171,6 +171,7 @@ void runConvert(const ConvertArgs& a)
                           {"droppedLevels", result.droppedLevels},
                           {"warnings", result.warnings},
                           {"timings", {{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds},
+                                       {"lodMeasureSeconds", result.measureSeconds},
                                        {"writeSeconds", writeSeconds}, {"totalSeconds", secondsSince(t0)}}}};
     writeJsonFile(a.report, report);
 }

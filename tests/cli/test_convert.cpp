@@ -76,8 +76,11 @@ TEST(CliConvert, ReportHasInputOptionsLevelsAndTimings)
     EXPECT_EQ(r.at("input").at("parts").get<int>(), 8);
     EXPECT_EQ(r.at("options").at("pixelError").get<double>(), 2.0);
     EXPECT_EQ(r.at("options").at("import").at("unitScale").get<double>(), 0.001);
-    for (const char* t : {"importSeconds", "lodSeconds", "writeSeconds", "totalSeconds"})
+    for (const char* t : {"importSeconds", "lodSeconds", "lodMeasureSeconds", "writeSeconds", "totalSeconds"})
         EXPECT_TRUE(r.at("timings").contains(t)) << t;
+    // Measuring the levels is part of building them.
+    EXPECT_GT(r.at("timings").at("lodMeasureSeconds").get<double>(), 0.0);
+    EXPECT_LE(r.at("timings").at("lodMeasureSeconds").get<double>(), r.at("timings").at("lodSeconds").get<double>());
     const auto& levels = r.at("levels");
     for (std::size_t k = 1; k < levels.size(); ++k) {
         const auto& l = levels[k];
