@@ -89,6 +89,7 @@ TEST_F(HeadlessOutputE2E, EachLogLineAppearsOnceWithTheDocumentedEnvironment)
     // so an earlier filter's lines repeat whatever the setting (docs/user-guide.md).
     EXPECT_EQ(linesContaining(lines, "LOD0:"), 1u) << run_.output;
     EXPECT_EQ(linesContaining(lines, "; model size "), 1u) << run_.output;
+    EXPECT_EQ(linesContaining(lines, " s of it measuring the levels against level 0)"), 1u) << run_.output;
     // The IO plugin's own stderr lines (fprintf, not qDebug) stay, once each.
     EXPECT_EQ(linesContaining(lines, "io_vrml_flt: VRML 2 import of"), 1u) << run_.output;
     EXPECT_EQ(linesContaining(lines, "io_vrml_flt: OpenFlight"), 1u) << run_.output;
