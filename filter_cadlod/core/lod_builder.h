@@ -48,8 +48,9 @@ struct LodSetResult {
     double modelSize = 0.0;                  // bbox diagonal of the original
     std::vector<int> droppedLevels;          // as numbered by newLevel(k)
     std::vector<std::string> warnings;       // why each dropped level was dropped
-    // Time spent measuring levels (and candidate proxies) against level 0: on one thread the
-    // measure's share of the build; on two, most of it runs beside the collapses.
+    // Time spent measuring levels (and candidate proxies) against level 0
+    // (DistanceToLevelZero): on one thread the measure's share of the build; on two, most of
+    // it runs beside the collapses.
     double measureSeconds = 0.0;
     bool ok() const { return error.empty(); }
 };
@@ -146,18 +147,24 @@ public:
     // missed it by 7 % (the demo's level 3), the edge pieces next to a long face's corner.
     SymmetricHausdorff operator()(MeshType& level, std::size_t backwardSamples)
     {
+        const auto start = std::chrono::steady_clock::now();
         prepare();
         SymmetricHausdorff h;
         together_(
             [&] { h.forward = fromLevelZero(level); },
             [&] {
                 const auto moved = [&](const auto& f) { return !detail::hasFace(facesOfLevelZero_, f); };
-                h.backward = distancesToSurface(hausdorffSamples(level, backwardSamples, 2, true, moved, kLevelEdgePieces), *index_,
-                                                nullptr, together_, kMeanEvery);
+                h.backward =
+                    distancesToSurface(hausdorffSamples(level, backwardSamples, 2, true, moved, kLevelEdgePieces),
+                                       *index_, nullptr, together_, kMeanEvery);
             });
         h.diagonal = diagonal_;
+        seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return h;
     }
+
+    // The time the measures took so far (LodSetResult::measureSeconds).
+    double seconds() const { return seconds_; }
 
 private:
     // The distances from level 0's points on the faces `level` no longer has. A level that
@@ -188,6 +195,7 @@ private:
     std::optional<detail::ClosestFace<MeshType>> index_;
     std::vector<detail::FaceKey> facesOfLevelZero_;  // sorted
     std::optional<HausdorffSamples> onAllOfLevelZero_;  // drawn on every face of level 0
+    double seconds_ = 0.0;
 };
 
 namespace detail {
@@ -285,10 +293,8 @@ LodSetResult buildLodSet(MeshType& original, const LodSetOptions& options,
     SymmetricHausdorff distance;
     CompactnessStats compactness;
     auto measure = [&](MeshType& mesh) {
-        const auto start = std::chrono::steady_clock::now();
         distance = distanceToOriginal(mesh, samples);
         compactness = meshCompactness(mesh);
-        result.measureSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     auto addLevel = [&](MeshType& mesh, int k) {
         LodLevel level = level0;
@@ -332,6 +338,7 @@ LodSetResult buildLodSet(MeshType& original, const LodSetOptions& options,
         meshes.push_back(mesh);
     }
 
+    result.measureSeconds = distanceToOriginal.seconds();
     detail::keepUsefulLevels(result, meshes);
     const double errorFloor = std::max(kRelativeErrorFloor * result.modelSize, 1e-12);
     assignSwitchDistances(result.levels, result.modelSize, options.view, errorFloor);

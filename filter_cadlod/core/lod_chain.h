@@ -44,7 +44,6 @@
 #include "run_together.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <deque>
@@ -306,15 +305,12 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         SymmetricHausdorff distance;
         CompactnessStats compactness;
     };
-    // (One measure runs at a time: beside the collapses, or alone.)
     auto measure = [&](MeshType& mesh) {
-        const auto start = std::chrono::steady_clock::now();
         Measures m;
         const std::size_t backwardSamples =
             std::min(samples, std::max(kMinBackwardSamples, kBackwardSamplesPerFace * std::size_t(mesh.fn)));
         together([&] { m.distance = distanceToOriginal(mesh, backwardSamples); },
                  [&] { m.compactness = meshCompactness(mesh); });
-        result.measureSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return m;
     };
     auto addLevel = [&](MeshType& mesh, const SimplifyStats& stats, const Measures& measured) {
@@ -634,6 +630,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
         }
     }
 
+    result.measureSeconds = distanceToOriginal.seconds();
     detail::keepUsefulLevels(result, meshes);
     const double errorFloor = std::max(kRelativeErrorFloor * result.modelSize, 1e-12);
     assignSwitchDistances(result.levels, result.modelSize, view, errorFloor);
