@@ -52,10 +52,12 @@
 #include <vcg/complex/algorithms/local_optimization/tri_edge_collapse.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <limits>
 #include <memory>
 #include <memory_resource>
+#include <utility>
 #include <vector>
 
 namespace cadlod {
@@ -233,6 +235,20 @@ struct CollapseContext : public vcg::BaseParameterClass {
     // Deleted elements reserved for tunnel cuts (tunnel_cut.h); empty: no cuts.
     std::vector<VertexType*> spareVertices;
     std::vector<typename MeshType::FaceType*> spareFaces;
+    // Per face index, the mark of the last walk that reached the face (a tunnel cut's walk
+    // over both sides of its loop, tunnel_cut.h), sized on the first walk.
+    std::vector<std::uint32_t> walkMark;
+    std::uint32_t walkClock = 0;
+    // Two marks no face holds yet, one for each side of a walk.
+    std::pair<std::uint32_t, std::uint32_t> newWalkMarks()
+    {
+        if (walkMark.size() != inputNormal.size() || walkClock > std::numeric_limits<std::uint32_t>::max() - 2) {
+            walkMark.assign(inputNormal.size(), 0);
+            walkClock = 0;
+        }
+        walkClock += 2;
+        return {walkClock - 1, walkClock};
+    }
 
     // Faces keep their identity through collapses (only a vertex is replaced), so the input
     // normal bounds the rotation a face accumulates over many collapses.

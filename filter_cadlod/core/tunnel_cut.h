@@ -33,7 +33,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <unordered_set>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -165,7 +165,7 @@ public:
     {
         Context& ctx = *static_cast<Context*>(pp);
         return ctx.spareVertices.size() >= 3 && ctx.spareFaces.size() >= 2 && trace(loop_, ctx, traced_) &&
-               !separates(traced_);
+               !separates(traced_, ctx);
     }
 
     void Execute(MeshType& m, vcg::BaseParameterClass* pp) override
@@ -299,9 +299,15 @@ private:
         return false;
     }
 
-    // Whether the faces on the loop's left reach those on its right only across the loop:
-    // a walk from face to face over shared edges, never over the loop's own.
-    bool separates(const Loop& loop) const
+    // Whether the faces on the loop's left reach those on its right only across the loop.
+    // Both sides are walked at once, a face at a time each, from face to face over shared
+    // edges, never over the loop's own. A side whose walk runs out of faces is cut off from
+    // the other: the loop separates. That side is mostly a small piece (a lead's tip, a pin
+    // squeezed at its root), so the walk stops after twice its faces; from the left side
+    // alone it went over the rest of the part, every time a collapse offered the loop again,
+    // which on a board of a few hundred parts took more time than the collapses. A face one
+    // walk reaches that the other has marked joins the two sides.
+    bool separates(const Loop& loop, Context& ctx) const
     {
         auto onLoop = [&](const VertexType* x, const VertexType* y) {
             for (int i = 0; i < 3; ++i)
@@ -309,14 +315,24 @@ private:
                     return true;
             return false;
         };
-        std::vector<FaceType*> right, stack;
-        for (const auto& side : loop.right)
+        const auto [leftMark, rightMark] = ctx.newWalkMarks();
+        auto& mark = ctx.walkMark;
+        auto index = [&](const FaceType* f) { return std::size_t(f - ctx.faceBase); };
+        std::vector<FaceType*> left, right;
+        for (const auto& side : loop.left)
             for (const Corner& c : side)
-                right.push_back(c.first);
-        std::sort(right.begin(), right.end());
-        stack.push_back(loop.left[0].front().first);
-        std::unordered_set<FaceType*> seen(stack.begin(), stack.end());
-        while (!stack.empty()) {
+                if (std::exchange(mark[index(c.first)], leftMark) != leftMark)
+                    left.push_back(c.first);
+        for (const auto& side : loop.right)
+            for (const Corner& c : side) {
+                if (mark[index(c.first)] == leftMark)
+                    return false;  // a face on both sides
+                if (std::exchange(mark[index(c.first)], rightMark) != rightMark)
+                    right.push_back(c.first);
+            }
+        // One face off `stack`, its neighbours across edges off the loop onto it; false when
+        // a neighbour is the other side's.
+        auto step = [&](std::vector<FaceType*>& stack, std::uint32_t own, std::uint32_t other) {
             FaceType* f = stack.back();
             stack.pop_back();
             for (int j = 0; j < 3; ++j) {
@@ -328,13 +344,20 @@ private:
                     FaceType* g = vfi.F();
                     if (g == f || (vfi.V1() != y && vfi.V2() != y))
                         continue;  // not across the edge (x, y)
-                    if (std::binary_search(right.begin(), right.end(), g))
+                    std::uint32_t& m = mark[index(g)];
+                    if (m == other)
                         return false;
-                    if (seen.insert(g).second)
+                    if (m != own) {
+                        m = own;
                         stack.push_back(g);
+                    }
                 }
             }
-        }
+            return true;
+        };
+        while (!left.empty() && !right.empty())
+            if (!step(left, leftMark, rightMark) || !step(right, rightMark, leftMark))
+                return false;
         return true;
     }
 

@@ -158,3 +158,31 @@ TEST(TunnelCut, APlateWithAnOpenFinStillClosesItsHole)
     EXPECT_EQ(s.closedTunnels, 1);
     EXPECT_LE(m.fn, kTarget) << s.message;
 }
+
+// A loop that separates its surface is no tunnel and is never cut: a dumbbell's neck of
+// three edges splits it into two closed pieces. (A cut needs the spare elements reserved for
+// the tunnels a mesh has: beside the dumbbell lies a drilled plate, whose hole a maximum
+// error below its radius keeps open.) The walk that tells (both sides at once,
+// tunnel_cut.h) ends at the smaller bulb.
+TEST(TunnelCut, ANeckThatSeparatesIsNotCut)
+{
+    CadBuilder b;
+    drilledPlate(b, kSide, kThickness, kHoleRadius, 32);
+    RevolveSpec spec;
+    spec.segments = 3;
+    const int dumbbell = revolve(b, {{0, 0}, {0, 10}, {12, 10}, {12, 1}, {40, 1}, {40, 6}, {46, 6}, {46, 0}}, spec);
+    b.translate(dumbbell, 2 * kSide, 0, 0);
+    TestMesh m;
+    b.build(m);
+    ASSERT_TRUE(closedAndOriented(m));
+    ASSERT_EQ(eulerCharacteristic(m), 2);  // the plate's 0 and the dumbbell's 2
+    SimplifyParams p;
+    p.closeTunnels = true;
+    p.maxError = 1.0 / liveDiagonal(m);
+    const SimplifyStats s = simplify(m, p);
+    vcg::tri::Allocator<TestMesh>::CompactEveryVector(m);
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_EQ(s.closedTunnels, 0);
+    EXPECT_TRUE(closedAndOriented(m));
+    EXPECT_EQ(eulerCharacteristic(m), 2);  // a cut neck makes the dumbbell two closed pieces (4)
+}
