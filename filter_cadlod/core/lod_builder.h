@@ -138,8 +138,9 @@ public:
     // level-0 faces they replace, are sampled densely (spread evenly, the random points
     // missed a level's largest distance by up to a quarter: chain_bench --verify). Level 0:
     // `samples` random points besides its vertices, and each such face's centroid and edge
-    // midpoints (on all of level 0, where that adds at most a quarter of the points: a
-    // fillet's or a thread's small faces); the level: `backwardSamples` random points
+    // midpoints where that adds at most a quarter of the points (a fillet's or a thread's
+    // small faces; on a board of a million faces that kept some, four points for each face
+    // it no longer has were most of a chain's time); the level: `backwardSamples` random points
     // besides its vertices and each such face's centroid, edge midpoints and the points that
     // split its edges into kLevelEdgePieces. A level held to its budget by the distance each
     // collapse opens from level 0's points (collapse_buckets.h) has its largest distance
@@ -175,16 +176,18 @@ private:
     {
         const detail::ClosestFace<MeshType> closest(level);
         const std::vector<detail::FaceKey> levelFaces = detail::sortedFaceKeys(level);
-        const bool everyFace = 4 * std::size_t(original_.fn) <= samples_;
-        const bool keptNone = std::none_of(levelFaces.begin(), levelFaces.end(),
-                                           [&](const detail::FaceKey& key) { return detail::hasKey(facesOfLevelZero_, key); });
-        if (keptNone) {
+        const std::size_t kept = std::size_t(std::count_if(levelFaces.begin(), levelFaces.end(), [&](const detail::FaceKey& key) {
+            return detail::hasKey(facesOfLevelZero_, key);
+        }));
+        const std::size_t goneFaces = std::size_t(original_.fn) - std::min(kept, std::size_t(original_.fn));
+        const bool everyFace = 4 * goneFaces <= samples_;
+        if (kept == 0) {
             if (!onAllOfLevelZero_)
                 onAllOfLevelZero_ = hausdorffSamples(original_, samples_, 1, everyFace);
             return distancesToSurface(*onAllOfLevelZero_, closest, nullptr, together_, kMeanEvery);
         }
         const auto gone = [&](const auto& f) { return !detail::hasFace(levelFaces, f); };
-        return distancesToSurface(hausdorffSamples(original_, samples_, 1, true, gone), closest, nullptr,
+        return distancesToSurface(hausdorffSamples(original_, samples_, 1, everyFace, gone), closest, nullptr,
                                   together_, kMeanEvery);
     }
 
