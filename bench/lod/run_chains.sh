@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds chain_bench (build-bench/) and runs it on the demo assembly, the generated bench
-# assembly and board, and the KiCad VRML exports of the CAD corpus (made by
-# scripts/make_cad_corpus.sh when missing); writes the table and one plot of triangles
+# assembly and board, the KiCad VRML exports of the CAD corpus (made by
+# scripts/make_cad_corpus.sh when missing) and a populated board of 70 of them (177 parts,
+# 298k triangles: bench/lod/make_board.py); writes the table and one plot of triangles
 # against distance per mesh (gnuplot, both chains).
 # With --verify, each of cadlod's levels is also measured again independently (other
 # random points, 20 per input face and at least a million per side): OUTDIR/verify.md gives
@@ -17,6 +18,8 @@ build="${CADLOD_BENCH_BUILD_DIR:-$ROOT/build-bench}"
 cmake -S "$ROOT" -B "$build" -G Ninja -DCADLOD_BUILD_BENCH=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j 2 --target chain_bench
 mapfile -t wrl < <(find "$corpus" -name '*.wrl' | sort)
+python3 "$ROOT/bench/lod/make_board.py" "$corpus/wrl" 70 "$out/board70.wrl"
+wrl+=("$out/board70.wrl")
 {
   echo "Command: bench/lod/run_chains.sh; cadlod at $(git -C "$ROOT" rev-parse --short HEAD), $(date -u +%Y-%m-%d)."
   echo
