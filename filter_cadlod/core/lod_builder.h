@@ -139,8 +139,8 @@ public:
     // missed a level's largest distance by up to a quarter: chain_bench --verify). Level 0:
     // `samples` random points besides its vertices, and each such face's centroid and edge
     // midpoints where that adds at most a quarter of the points (a fillet's or a thread's
-    // small faces; on a board of a million faces that kept some, four points for each face
-    // it no longer has were most of a chain's time); the level: `backwardSamples` random points
+    // small faces; a board's level that kept a few large faces got them on all the rest, a
+    // million points a level at 300k faces); the level: `backwardSamples` random points
     // besides its vertices and each such face's centroid, edge midpoints and the points that
     // split its edges into kLevelEdgePieces. A level held to its budget by the distance each
     // collapse opens from level 0's points (collapse_buckets.h) has its largest distance
@@ -176,9 +176,8 @@ private:
     {
         const detail::ClosestFace<MeshType> closest(level);
         const std::vector<detail::FaceKey> levelFaces = detail::sortedFaceKeys(level);
-        const std::size_t kept = std::size_t(std::count_if(levelFaces.begin(), levelFaces.end(), [&](const detail::FaceKey& key) {
-            return detail::hasKey(facesOfLevelZero_, key);
-        }));
+        const auto inLevelZero = [&](const detail::FaceKey& key) { return detail::hasKey(facesOfLevelZero_, key); };
+        const std::size_t kept = std::size_t(std::count_if(levelFaces.begin(), levelFaces.end(), inLevelZero));
         const std::size_t goneFaces = std::size_t(original_.fn) - std::min(kept, std::size_t(original_.fn));
         const bool everyFace = 4 * goneFaces <= samples_;
         if (kept == 0) {
