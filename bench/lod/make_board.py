@@ -8,6 +8,7 @@ Deterministic: the same file for the same corpus and COUNT.
 
   bench/lod/make_board.py CORPUS_WRL_DIR COUNT OUT.wrl
 """
+import math
 import os
 import re
 import sys
@@ -22,7 +23,7 @@ NAME = re.compile(r"\b(DEF|USE)\s+([^\s{}\[\]]+)")
 def body(text, suffix):
     """The file's nodes without its header line, every DEF/USE name given `suffix`."""
     lines = text.split("\n", 1)
-    rest = lines[1] if lines and lines[0].startswith("#VRML") and len(lines) > 1 else text
+    rest = lines[1] if lines[0].startswith("#VRML") and len(lines) > 1 else text
     return NAME.sub(lambda m: f"{m.group(1)} {m.group(2)}_{suffix}", rest)
 
 
@@ -34,9 +35,7 @@ def main():
     if not files or count < 1:
         sys.exit(f"no .wrl files in {corpus}, or COUNT < 1")
     texts = [open(os.path.join(corpus, f), encoding="latin-1").read() for f in files]
-    side = 1
-    while side * side < count:
-        side += 1
+    side = math.isqrt(count - 1) + 1  # the smallest square grid that holds them
     tmp = out + ".partial"
     with open(tmp, "w", encoding="latin-1") as w:
         w.write("#VRML V2.0 utf8\n# cadlod bench: a board of %d parts from the CAD corpus\n" % count)

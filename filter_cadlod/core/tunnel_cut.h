@@ -316,47 +316,45 @@ private:
             return false;
         };
         const auto [leftMark, rightMark] = ctx.newWalkMarks();
-        auto& mark = ctx.walkMark;
-        auto index = [&](const FaceType* f) { return std::size_t(f - ctx.faceBase); };
-        std::vector<FaceType*> left, right;
-        for (const auto& side : loop.left)
-            for (const Corner& c : side)
-                if (std::exchange(mark[index(c.first)], leftMark) != leftMark)
-                    left.push_back(c.first);
-        for (const auto& side : loop.right)
-            for (const Corner& c : side) {
-                if (mark[index(c.first)] == leftMark)
-                    return false;  // a face on both sides
-                if (std::exchange(mark[index(c.first)], rightMark) != rightMark)
-                    right.push_back(c.first);
+        struct Side {
+            std::uint32_t own, other;  // the marks of its faces and of the other side's
+            std::vector<FaceType*> stack;
+        };
+        // A side's walk reaching face g: false when the other side holds it, else g is marked
+        // and stacked unless it already was.
+        auto reach = [&](Side& side, FaceType* g) {
+            std::uint32_t& m = ctx.walkMark[std::size_t(g - ctx.faceBase)];
+            if (m == side.other)
+                return false;
+            if (m != side.own) {
+                m = side.own;
+                side.stack.push_back(g);
             }
-        // One face off `stack`, its neighbours across edges off the loop onto it; false when
-        // a neighbour is the other side's.
-        auto step = [&](std::vector<FaceType*>& stack, std::uint32_t own, std::uint32_t other) {
-            FaceType* f = stack.back();
-            stack.pop_back();
+            return true;
+        };
+        // One face off the side's stack, its neighbours across edges off the loop reached.
+        auto step = [&](Side& side) {
+            FaceType* f = side.stack.back();
+            side.stack.pop_back();
             for (int j = 0; j < 3; ++j) {
                 VertexType* x = f->V(j);
                 VertexType* y = f->V((j + 1) % 3);
                 if (onLoop(x, y))
                     continue;
-                for (VFIterator vfi(x); !vfi.End(); ++vfi) {
-                    FaceType* g = vfi.F();
-                    if (g == f || (vfi.V1() != y && vfi.V2() != y))
-                        continue;  // not across the edge (x, y)
-                    std::uint32_t& m = mark[index(g)];
-                    if (m == other)
-                        return false;
-                    if (m != own) {
-                        m = own;
-                        stack.push_back(g);
-                    }
-                }
+                for (VFIterator vfi(x); !vfi.End(); ++vfi)
+                    if (vfi.F() != f && (vfi.V1() == y || vfi.V2() == y) && !reach(side, vfi.F()))
+                        return false;  // across the edge (x, y): the other side's
             }
             return true;
         };
-        while (!left.empty() && !right.empty())
-            if (!step(left, leftMark, rightMark) || !step(right, rightMark, leftMark))
+        Side left{leftMark, rightMark, {}}, right{rightMark, leftMark, {}};
+        for (auto [side, corners] : {std::pair{&left, &loop.left}, std::pair{&right, &loop.right}})
+            for (const auto& around : *corners)
+                for (const Corner& c : around)
+                    if (!reach(*side, c.first))
+                        return false;  // a face on both sides
+        while (!left.stack.empty() && !right.stack.empty())
+            if (!step(left) || !step(right))
                 return false;
         return true;
     }
