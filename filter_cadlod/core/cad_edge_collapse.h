@@ -64,6 +64,7 @@ namespace cadlod {
 
 template <class MeshType>
 class TunnelCut;  // tunnel_cut.h: offered when a collapse fails the link condition
+class ComponentSurfaces;  // rest_of_model.h: how far a component stands off the others
 
 // A face around the collapsing edge that survives it: (new vertex, a, b). What does not
 // depend on the new vertex is computed once per edge, not once per candidate.
@@ -180,6 +181,11 @@ struct CollapseContext : public vcg::BaseParameterClass {
     std::vector<RingFace> ring;   // scratch of the edge being evaluated
     int mark = 0;                 // this session's clock: ticks at every collapse (vcglib's GlobalMark)
     bool mayRemoveLargestComponent = false;  // the mesh is a piece of a model whose largest component is elsewhere
+    // A piece of a model (collapse_buckets.h): the whole model's components as it was dealt,
+    // and per face of the piece the model's component it came from, for the gap a removal
+    // leaves (component_removal.h). Null: the session's mesh is the whole model.
+    std::shared_ptr<const ComponentSurfaces> modelComponents;
+    std::vector<std::int32_t> modelComponentOf;
     int& ringChanged(const VertexType* v) { return ringChangedAt[v - vertexBase]; }
     const VertexType* vertexBase = nullptr;
     // Collapses about to run are checked against the input surface (input_surface.h): one

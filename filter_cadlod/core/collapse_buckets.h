@@ -15,6 +15,7 @@
 
 #include "component_removal.h"
 #include "lod_builder.h"  // detail::copyWithParts
+#include "rest_of_model.h"
 #include "run_together.h"
 #include "simplify.h"
 
@@ -23,6 +24,7 @@
 #include <algorithm>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -63,10 +65,19 @@ public:
             components.empty() ? 0 : std::size_t(components.back().faces.front() - &model.face[0]);
         bits_ = takeFeatureBits<MeshType>();
         ownBits_ = true;
+        // The gap a removal leaves is measured against the whole model, whose other pieces
+        // a bucket does not hold (rest_of_model.h).
+        std::shared_ptr<const ComponentSurfaces> wholeModel;
+        if (components.size() >= 2)
+            wholeModel = std::make_shared<const ComponentSurfaces>(model, components);
         for (const std::vector<std::size_t>& faces : dealt) {
             Bucket& b = buckets_.emplace_back(newMesh_());
             copyFaces(model, faces, b.mesh);
             b.ctx.mayRemoveLargestComponent = !std::binary_search(faces.begin(), faces.end(), largestFace);
+            b.ctx.modelComponents = wholeModel;
+            if (wholeModel)
+                for (std::size_t f : faces)  // the bucket's faces are the model's, in order
+                    b.ctx.modelComponentOf.push_back(wholeModel->componentOfFace(f));
         }
         forEachBucket(0, buckets_.size(), together,
                       [&](Bucket& b) { b.ready = prepareCollapse(b.mesh, params, b.ctx, b.stats, &bits_, diagonal); });

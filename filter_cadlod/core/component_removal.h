@@ -20,12 +20,14 @@
 
 #include "cad_edge_collapse.h"
 #include "components.h"
-#include "triangle_tree.h"
+#include "rest_of_model.h"
 
 #include <vcg/complex/algorithms/local_optimization.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,9 +59,7 @@ public:
         const std::vector<int> group = touchGroups(m, components);
         const int kept = removable < components.size() ? group.back() : -1;  // the largest's group
         const double penalty = std::max(1.0, ctx.params.featurePenalty);
-        // Where the rest of the model is in other meshes (pieces simplified side by side),
-        // the gap to it cannot be measured here: the size stands for it.
-        RestOfModel rest(m, components, !ctx.mayRemoveLargestComponent);
+        RestOfModel rest(m, components, ctx);
         for (const std::vector<std::size_t>& members : groupMembers(group)) {
             const int g = group[members.front()];
             if (g == kept)
@@ -83,8 +83,7 @@ public:
                 weight += ctx.quadrics.area(v) / 3.0;
             // In the far field a removal is ranked by the gap it leaves, as collapses are by
             // the distance they open there (far_field.h).
-            const double distance = rest.farthest(vertices, [&](std::size_t c) { return group[c] == g; },
-                                                  ctx.inFarField() && rest.measures() ? 0.0 : size);
+            const double distance = rest.farthest(vertices, members, ctx.inFarField() && rest.measures() ? 0.0 : size);
             if (ctx.exceedsBound(distance, distance))
                 continue;
             const double cost = penalty * weight * distance * distance;
@@ -125,16 +124,22 @@ public:
     }
 
 private:
-    // The surface of every component, each face knowing its component: how far a
-    // component's vertices stand from the surface of all the others.
+    // How far a component stands off the rest (rest_of_model.h). A session over a whole
+    // model measures against the other components of its mesh, as they are now. A session
+    // over one piece of a model (collapse_buckets.h) measures against the whole model as it
+    // was dealt (CollapseContext::modelComponents), which has moved since by no more than
+    // the budgets of the levels between: its own mesh lacks the other pieces' components,
+    // and one of them may be the nearest. A piece without that index takes the size for the
+    // gap.
     class RestOfModel
     {
     public:
-        // Without `measure`, farthest() is its floor. The faces are indexed at the first
-        // distance asked for: where every small component touches another (an unwelded
-        // export) or exceeds the maximum error, none is.
-        RestOfModel(MeshType& m, const std::vector<Component<MeshType>>& components, bool measure)
-            : m_(m), components_(components), measure_(measure && components.size() >= 2)
+        // The own mesh's faces are indexed at the first distance asked for: where every
+        // small component touches another (an unwelded export) or exceeds the maximum
+        // error, none is.
+        RestOfModel(MeshType& m, const std::vector<Component<MeshType>>& components, const Context& ctx)
+            : m_(m), components_(components), ctx_(ctx),
+              measure_(ctx.modelComponents || (!ctx.mayRemoveLargestComponent && components.size() >= 2))
         {
         }
 
@@ -142,81 +147,47 @@ private:
         bool measures() const { return measure_; }
 
         // The largest distance from the extreme vertices of `vertices` (of the components
-        // `own` says are theirs) to the nearest face of another component, or `floor` if that
-        // is larger. The vertex farthest from the rest is one of the component's extremes; and
-        // each search has to pass over every face of the component's own that lies nearer,
-        // so searching from every vertex of a large component would take its size squared.
-        template <class Own>
-        double farthest(const std::vector<VertexType*>& vertices, const Own& own, double floor)
+        // `members`, in increasing order) to the nearest face of another component, or
+        // `floor` if that is larger.
+        double farthest(const std::vector<VertexType*>& vertices, const std::vector<std::size_t>& members, double floor)
         {
-            double farthest = floor;
             if (!measure_)
-                return farthest;
-            if (tree_.empty())
-                index();
-            auto another = [&](std::size_t k) { return !own(componentOf_[k]); };
-            for (const VertexType* v : extremes(vertices)) {
-                const vcg::Point3d p = vcg::Point3d::Construct(v->cP());
-                double d = 0.0;
-                if (tree_.closest(p, farthest, d, another) >= 0)
-                    continue;
-                if (tree_.closest(p, maxDistance_, d, another) >= 0)
-                    farthest = std::max(farthest, d);
+                return floor;
+            const std::vector<vcg::Point3d> points = extremePoints(vertices);
+            if (ctx_.modelComponents) {
+                const std::vector<std::int32_t> own = modelComponentsOf(members);
+                return ctx_.modelComponents->farthest(
+                    points, [&](std::int32_t k) { return std::binary_search(own.begin(), own.end(), k); }, floor);
             }
-            return farthest;
+            if (!ownMesh_)
+                ownMesh_.emplace(m_, components_);
+            return ownMesh_->farthest(
+                points, [&](std::int32_t k) { return std::binary_search(members.begin(), members.end(), std::size_t(k)); },
+                floor);
         }
 
     private:
-        // Every face of every component, each knowing its component.
-        void index()
+        // The model's components the faces of `members` came from, sorted (faces made since,
+        // a tunnel's caps, have none).
+        std::vector<std::int32_t> modelComponentsOf(const std::vector<std::size_t>& members) const
         {
-            std::vector<FaceType*> faces;
-            for (std::size_t c = 0; c < components_.size(); ++c)
-                for (FaceType* f : components_[c].faces) {
-                    faces.push_back(f);
-                    componentOf_.push_back(c);
+            std::vector<std::int32_t> own;
+            for (std::size_t c : members)
+                for (const FaceType* f : components_[c].faces) {
+                    const std::size_t i = std::size_t(f - &m_.face[0]);
+                    if (i < ctx_.modelComponentOf.size() && ctx_.modelComponentOf[i] >= 0)
+                        own.push_back(ctx_.modelComponentOf[i]);
                 }
-            tree_ = TriangleTree::of(m_, faces);
-            vcg::Box3d all;
-            for (const Component<MeshType>& c : components_)
-                all.Add(c.box);
-            maxDistance_ = 4 * all.Diag() + 1;
-        }
-
-        // The vertices farthest along the axes and the box diagonals, both ways (at most 14).
-        static std::vector<const VertexType*> extremes(const std::vector<VertexType*>& vertices)
-        {
-            std::vector<const VertexType*> out;
-            if (vertices.empty())
-                return out;
-            std::vector<vcg::Point3d> directions;
-            for (int axis = 0; axis < 3; ++axis) {
-                vcg::Point3d d(0, 0, 0);
-                d[axis] = 1;
-                directions.push_back(d);
-                directions.push_back(-d);
-            }
-            for (int x = -1; x <= 1; x += 2)
-                for (int y = -1; y <= 1; y += 2)
-                    for (int z = -1; z <= 1; z += 2)
-                        directions.push_back(vcg::Point3d(x, y, z));
-            for (const vcg::Point3d& d : directions) {
-                const VertexType* best = vertices.front();
-                for (const VertexType* v : vertices)
-                    if (vcg::Point3d::Construct(v->cP()) * d > vcg::Point3d::Construct(best->cP()) * d)
-                        best = v;
-                if (std::find(out.begin(), out.end(), best) == out.end())
-                    out.push_back(best);
-            }
-            return out;
+            std::sort(own.begin(), own.end());
+            own.erase(std::unique(own.begin(), own.end()), own.end());
+            return own;
         }
 
         MeshType& m_;
         const std::vector<Component<MeshType>>& components_;
+        const Context& ctx_;
         bool measure_;
-        TriangleTree tree_{{}, {}};
-        std::vector<std::size_t> componentOf_;  // per indexed face
-        double maxDistance_ = 1.0;
+        std::optional<ComponentSurfaces> ownMesh_;
     };
 
     // The components of each touch group (`group`: per component, its group), smallest

@@ -131,9 +131,7 @@ TEST(CollapseBuckets, OnlyTheModelsLargestComponentIsNeverRemovedWholeAndTouchin
 }
 
 // In the far field of an LOD chain's pieces a removal is held to the distance bound, not to
-// the error bound: a part goes only where its size and the gap it leaves are within it (in a
-// bucket without the model's largest component, whose gap to the rest cannot be measured
-// there, its size stands for the gap).
+// the error bound: a part goes only where its size and the gap it leaves are within it.
 TEST(CollapseBuckets, InTheFarFieldAPartIsRemovedOnlyWhereItsGapIsWithinTheDistanceBound)
 {
     SimplifyParams params;
@@ -171,6 +169,37 @@ TEST(CollapseBuckets, InTheFarFieldAPartIsRemovedOnlyWhereItsGapIsWithinTheDista
     for (int part : left)
         EXPECT_TRUE(part == 0 || part == d.chipPart || part == d.copyPart) << "part " << part << " left";
     d.buckets.release();
+}
+
+// A small part floating off the rest of the model leaves a gap as wide as its distance from
+// the rest when removed, not as wide as itself. It is alone in its bucket, and the part
+// nearest it is in another: the gap is measured against the whole model as it was dealt.
+TEST(CollapseBuckets, ASmallPartStandingOffTheRestGoesOnlyWhereItsGapIsWithinTheBound)
+{
+    CadBuilder b;
+    b.currentPart = 0;
+    stripPlate(b, 100, 80, 1.6, 20);  // the largest: never removed
+    b.currentPart = 1;
+    b.translate(stripPlate(b, 20, 20, 2, 4), 30, 30, 1.6);  // a block on it
+    b.currentPart = 2;
+    const double size = std::sqrt(3 * 0.5 * 0.5), gap = 5.0;
+    b.translate(stripPlate(b, 0.5, 0.5, 0.5, 2), 40, 40, 3.6 + gap);  // a chip floating above the block
+    TestMesh model;
+    b.build(model, true);
+    auto removedWithin = [&](double bound) {
+        std::deque<TestMesh> meshes;
+        CollapseBuckets<TestMesh> buckets{[&]() -> TestMesh& { return meshes.emplace_back(); }};
+        std::string error;
+        EXPECT_TRUE(buckets.prepare(model, SimplifyParams(), error)) << error;
+        EXPECT_EQ(meshes.size(), 3u);  // one part per bucket
+        buckets.collapse(bound, 0.0, runOnTwoThreads);
+        SimplifyStats stats;
+        buckets.addStatsTo(stats);
+        buckets.release();
+        return stats.removedComponents;
+    };
+    EXPECT_EQ(removedWithin(2 * size), 0);    // its size is within the bound, its gap is not
+    EXPECT_EQ(removedWithin(1.2 * gap), 1);   // both are
 }
 
 namespace {

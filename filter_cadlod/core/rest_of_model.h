@@ -1,0 +1,109 @@
+// How far a connected component stands off the rest of the model: the gap that removing it
+// whole leaves (component_removal.h). Where that gap is wider than the component (a small
+// part floating beside a body, a tip beyond it), the Hausdorff distance sees the gap.
+//
+// The vertex farthest from the rest is one of the component's extremes (along the axes and
+// the box diagonals), and only those are looked up: each search has to pass over every face
+// of the component's own that lies nearer, so searching from every vertex of a large
+// component would take its size squared.
+#pragma once
+
+#include "components.h"
+#include "triangle_tree.h"
+
+#include <vcg/space/point3.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace cadlod {
+
+// The faces of a set of components in one search tree, each knowing its component.
+class ComponentSurfaces
+{
+public:
+    // The live faces of `components` (of `m`); componentOfFace() answers for m.face as it is now.
+    template <class MeshType>
+    ComponentSurfaces(const MeshType& m, const std::vector<Component<MeshType>>& components)
+    {
+        componentOfFace_.assign(m.face.size(), -1);
+        std::vector<const typename MeshType::FaceType*> faces;
+        vcg::Box3d all;
+        for (std::size_t c = 0; c < components.size(); ++c) {
+            for (const auto* f : components[c].faces) {
+                faces.push_back(f);
+                componentOfTriangle_.push_back(std::int32_t(c));
+                componentOfFace_[std::size_t(f - &m.face[0])] = std::int32_t(c);
+            }
+            all.Add(components[c].box);
+        }
+        tree_ = TriangleTree::of(m, faces);
+        maxDistance_ = all.IsNull() ? 1.0 : 4 * all.Diag() + 1;
+    }
+
+    // The component of face `face` of the mesh this was made of; -1: none (deleted, or made
+    // since).
+    std::int32_t componentOfFace(std::size_t face) const
+    {
+        return face < componentOfFace_.size() ? componentOfFace_[face] : -1;
+    }
+
+    // The largest distance from `points` to the nearest face of a component `own` does not
+    // claim, or `floor` where that is larger.
+    template <class Own>
+    double farthest(const std::vector<vcg::Point3d>& points, const Own& own, double floor) const
+    {
+        double farthest = floor;
+        auto another = [&](std::size_t k) { return !own(componentOfTriangle_[k]); };
+        for (const vcg::Point3d& p : points) {
+            double d = 0.0;
+            if (tree_.closest(p, farthest, d, another) >= 0)
+                continue;  // nearer than the farthest so far
+            if (tree_.closest(p, maxDistance_, d, another) >= 0)
+                farthest = std::max(farthest, d);
+        }
+        return farthest;
+    }
+
+private:
+    TriangleTree tree_{{}, {}};
+    std::vector<std::int32_t> componentOfTriangle_;  // per tree triangle
+    std::vector<std::int32_t> componentOfFace_;      // per face of the mesh
+    double maxDistance_ = 1.0;
+};
+
+// The positions of the vertices farthest along the axes and the box diagonals, both ways
+// (at most 14 distinct vertices).
+template <class VertexType>
+std::vector<vcg::Point3d> extremePoints(const std::vector<VertexType*>& vertices)
+{
+    std::vector<const VertexType*> chosen;
+    if (vertices.empty())
+        return {};
+    std::vector<vcg::Point3d> directions;
+    for (int axis = 0; axis < 3; ++axis) {
+        vcg::Point3d d(0, 0, 0);
+        d[axis] = 1;
+        directions.push_back(d);
+        directions.push_back(-d);
+    }
+    for (int x = -1; x <= 1; x += 2)
+        for (int y = -1; y <= 1; y += 2)
+            for (int z = -1; z <= 1; z += 2)
+                directions.push_back(vcg::Point3d(x, y, z));
+    for (const vcg::Point3d& d : directions) {
+        const VertexType* best = vertices.front();
+        for (const VertexType* v : vertices)
+            if (vcg::Point3d::Construct(v->cP()) * d > vcg::Point3d::Construct(best->cP()) * d)
+                best = v;
+        if (std::find(chosen.begin(), chosen.end(), best) == chosen.end())
+            chosen.push_back(best);
+    }
+    std::vector<vcg::Point3d> points;
+    for (const VertexType* v : chosen)
+        points.push_back(vcg::Point3d::Construct(v->cP()));
+    return points;
+}
+
+}  // namespace cadlod
