@@ -186,6 +186,10 @@ struct CollapseContext : public vcg::BaseParameterClass {
     // leaves (component_removal.h). Null: the session's mesh is the whole model.
     std::shared_ptr<const ComponentSurfaces> modelComponents;
     std::vector<std::int32_t> modelComponentOf;
+    // The model's components this session removed whole: gone for its own later removals at
+    // once, for every piece's from the next level on (CollapseBuckets::collapse), so that
+    // the pieces' sessions do not depend on the order they run in.
+    std::vector<std::int32_t> modelComponentsRemoved;
     int& ringChanged(const VertexType* v) { return ringChangedAt[v - vertexBase]; }
     const VertexType* vertexBase = nullptr;
     // Collapses about to run are checked against the input surface (input_surface.h): one

@@ -67,9 +67,10 @@ public:
         ownBits_ = true;
         // The gap a removal leaves is measured against the whole model, whose other pieces
         // a bucket does not hold (rest_of_model.h).
-        std::shared_ptr<const ComponentSurfaces> wholeModel;
+        wholeModel_.reset();
         if (components.size() >= 2)
-            wholeModel = std::make_shared<const ComponentSurfaces>(model, components);
+            wholeModel_ = std::make_shared<ComponentSurfaces>(model, components);
+        const std::shared_ptr<const ComponentSurfaces> wholeModel = wholeModel_;
         for (const std::vector<std::size_t>& faces : dealt) {
             Bucket& b = buckets_.emplace_back(newMesh_());
             copyFaces(model, faces, b.mesh);
@@ -116,6 +117,13 @@ public:
                                           std::to_string(b.stats.halvesBandVertices) + " vertices between them)");
             collapseToTarget(b.mesh, b.ctx, b.stats, nullptr);
         });
+        // What one piece removed is gone for every piece's removals from the next level on.
+        for (Bucket& b : buckets_) {
+            if (wholeModel_)
+                for (const std::int32_t c : b.ctx.modelComponentsRemoved)
+                    wholeModel_->markGone(c);
+            b.ctx.modelComponentsRemoved.clear();
+        }
     }
 
     int faces() const
@@ -279,6 +287,7 @@ private:
 
     std::function<MeshType&()> newMesh_;
     std::deque<Bucket> buckets_;
+    std::shared_ptr<ComponentSurfaces> wholeModel_;  // the model as dealt (rest_of_model.h)
     FeatureBits bits_;
     bool ownBits_ = false;
     bool holdBeforeFarField_ = false;  // holdToDistanceBeforeFarField

@@ -109,6 +109,12 @@ public:
         if (ctx.farField)
             for (const FaceType* f : c.faces)
                 ctx.farField->dropPointsOf(f);
+        if (ctx.modelComponents)
+            for (const FaceType* f : c.faces) {
+                const std::size_t i = std::size_t(f - &m.face[0]);
+                if (i < ctx.modelComponentOf.size() && ctx.modelComponentOf[i] >= 0)
+                    ctx.modelComponentsRemoved.push_back(ctx.modelComponentOf[i]);
+            }
         removeComponent(m, c);
         ctx.stats->removedComponents += pieces_;
         ctx.stats->largestRemovedComponent = std::max(ctx.stats->largestRemovedComponent, size_);
@@ -127,9 +133,9 @@ private:
     // How far a component stands off the rest (rest_of_model.h). A session over a whole
     // model measures against the other components of its mesh, as they are now. A session
     // over one piece of a model (collapse_buckets.h) measures against the whole model as it
-    // was dealt (CollapseContext::modelComponents), which has moved since by no more than
-    // the budgets of the levels between: its own mesh lacks the other pieces' components,
-    // and one of them may be the nearest. A piece without that index takes the size for the
+    // was dealt (CollapseContext::modelComponents), less the components removed since, the
+    // rest having moved by no more than the budgets of the levels between: its own mesh
+    // lacks the other pieces' components, and one of them may be the nearest. A piece without that index takes the size for the
     // gap.
     class RestOfModel
     {
@@ -156,8 +162,14 @@ private:
             const std::vector<vcg::Point3d> points = extremePoints(vertices);
             if (ctx_.modelComponents) {
                 const std::vector<std::int32_t> own = modelComponentsOf(members);
+                const std::vector<std::int32_t>& removed = ctx_.modelComponentsRemoved;
                 return ctx_.modelComponents->farthest(
-                    points, [&](std::int32_t k) { return std::binary_search(own.begin(), own.end(), k); }, floor);
+                    points,
+                    [&](std::int32_t k) {
+                        return std::binary_search(own.begin(), own.end(), k) ||
+                               std::find(removed.begin(), removed.end(), k) != removed.end();
+                    },
+                    floor);
             }
             if (!ownMesh_)
                 ownMesh_.emplace(m_, components_);

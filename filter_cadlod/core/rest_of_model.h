@@ -39,6 +39,7 @@ public:
             all.Add(components[c].box);
         }
         tree_ = TriangleTree::of(m, faces);
+        gone_.assign(components.size(), 0);
         maxDistance_ = all.IsNull() ? 1.0 : 4 * all.Diag() + 1;
     }
 
@@ -49,13 +50,23 @@ public:
         return face < componentOfFace_.size() ? componentOfFace_[face] : -1;
     }
 
-    // The largest distance from `points` to the nearest face of a component `own` does not
-    // claim, or `floor` where that is larger.
-    template <class Own>
-    double farthest(const std::vector<vcg::Point3d>& points, const Own& own, double floor) const
+    // Component c is gone (removed whole): from here on no distance is measured to it.
+    void markGone(std::int32_t c)
+    {
+        if (c >= 0 && std::size_t(c) < gone_.size())
+            gone_[std::size_t(c)] = 1;
+    }
+
+    // The largest distance from `points` to the nearest face of a component that is not gone
+    // and that `skip` does not claim, or `floor` where that is larger.
+    template <class Skip>
+    double farthest(const std::vector<vcg::Point3d>& points, const Skip& skip, double floor) const
     {
         double farthest = floor;
-        auto another = [&](std::size_t k) { return !own(componentOfTriangle_[k]); };
+        auto another = [&](std::size_t k) {
+            const std::int32_t c = componentOfTriangle_[k];
+            return !gone_[std::size_t(c)] && !skip(c);
+        };
         for (const vcg::Point3d& p : points) {
             double d = 0.0;
             if (tree_.closest(p, farthest, d, another) >= 0)
@@ -70,6 +81,7 @@ private:
     TriangleTree tree_{{}, {}};
     std::vector<std::int32_t> componentOfTriangle_;  // per tree triangle
     std::vector<std::int32_t> componentOfFace_;      // per face of the mesh
+    std::vector<char> gone_;                         // per component: markGone
     double maxDistance_ = 1.0;
 };
 

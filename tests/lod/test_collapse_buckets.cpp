@@ -202,6 +202,40 @@ TEST(CollapseBuckets, ASmallPartStandingOffTheRestGoesOnlyWhereItsGapIsWithinThe
     EXPECT_EQ(removedWithin(1.2 * gap), 1);   // both are
 }
 
+// A part removed at one level is gone from the next: the gap another part's removal leaves
+// is measured to what is left. A chip sits just above a block that floats high above the
+// board; the chip goes first, and then the block would leave a gap as wide as its height
+// above the board, not as wide as its gap to the chip. The three are in three pieces.
+TEST(CollapseBuckets, APartRemovedAtOneLevelIsGoneForTheGapsOfTheNext)
+{
+    CadBuilder b;
+    b.currentPart = 0;
+    stripPlate(b, 100, 80, 1.6, 20);  // the largest: never removed
+    const double height = 10.0;       // the block's gap to the board
+    b.currentPart = 1;
+    b.translate(stripPlate(b, 2, 2, 2, 2), 40, 40, 1.6 + height);
+    b.currentPart = 2;
+    b.translate(stripPlate(b, 0.5, 0.5, 0.5, 2), 40, 40, 1.6 + height + 2 + 0.5);  // 0.5 above the block
+    TestMesh model;
+    b.build(model, true);
+    std::deque<TestMesh> meshes;
+    CollapseBuckets<TestMesh> buckets{[&]() -> TestMesh& { return meshes.emplace_back(); }};
+    std::string error;
+    ASSERT_TRUE(buckets.prepare(model, SimplifyParams(), error)) << error;
+    ASSERT_EQ(meshes.size(), 3u);  // one part per bucket
+    SimplifyStats stats;
+    buckets.collapse(1.5, 0.0, runOnTwoThreads);  // above the chip's size and gap, below the block's size
+    buckets.addStatsTo(stats);
+    EXPECT_EQ(stats.removedComponents, 1);
+    buckets.collapse(5.0, 0.0, runOnTwoThreads);  // above the block's size, below its gap to the board
+    buckets.addStatsTo(stats);
+    EXPECT_EQ(stats.removedComponents, 1);
+    buckets.collapse(2 * height, 0.0, runOnTwoThreads);  // above its top's distance to the board too
+    buckets.addStatsTo(stats);
+    EXPECT_EQ(stats.removedComponents, 2);
+    buckets.release();
+}
+
 namespace {
 
 // A block (side × side × height) with a blind round pocket `depth` deep in its top: a
