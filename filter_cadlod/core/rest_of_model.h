@@ -8,6 +8,7 @@
 // component would take its size squared.
 #pragma once
 
+#include "cad_edge_collapse.h"
 #include "components.h"
 #include "triangle_tree.h"
 
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace cadlod {
@@ -117,5 +119,82 @@ std::vector<vcg::Point3d> extremePoints(const std::vector<VertexType*>& vertices
         points.push_back(vcg::Point3d::Construct(v->cP()));
     return points;
 }
+
+// How far a component of a session's mesh stands off the rest. A session over a whole
+// model measures against the other components of its mesh, as they are now. A session over
+// one piece of a model (collapse_buckets.h) measures against the whole model as it was
+// dealt (CollapseContext::modelComponents), less the components removed since, the rest
+// having moved by no more than the budgets of the levels between: its own mesh lacks the
+// other pieces' components, and one of them may be the nearest. A piece without that index
+// takes the size for the gap.
+template <class MeshType>
+class RestOfModel
+{
+public:
+    using VertexType = typename MeshType::VertexType;
+    using FaceType = typename MeshType::FaceType;
+    using Context = CollapseContext<MeshType>;
+
+    // The own mesh's faces are indexed at the first distance asked for: where every
+    // small component touches another (an unwelded export) or exceeds the maximum
+    // error, none is.
+    RestOfModel(MeshType& m, const std::vector<Component<MeshType>>& components, const Context& ctx)
+        : m_(m), components_(components), ctx_(ctx),
+          measure_(ctx.modelComponents || (!ctx.mayRemoveLargestComponent && components.size() >= 2))
+    {
+    }
+
+    // Whether distances to the rest are measured here (else farthest() is its floor).
+    bool measures() const { return measure_; }
+
+    // The largest distance from the extreme vertices of `vertices` (of the components
+    // `members`, in increasing order) to the nearest face of another component, or
+    // `floor` if that is larger.
+    double farthest(const std::vector<VertexType*>& vertices, const std::vector<std::size_t>& members, double floor)
+    {
+        if (!measure_)
+            return floor;
+        const std::vector<vcg::Point3d> points = extremePoints(vertices);
+        if (ctx_.modelComponents) {
+            const std::vector<std::int32_t> own = modelComponentsOf(members);
+            const std::vector<std::int32_t>& removed = ctx_.modelComponentsRemoved;
+            return ctx_.modelComponents->farthest(
+                points,
+                [&](std::int32_t k) {
+                    return std::binary_search(own.begin(), own.end(), k) ||
+                           std::find(removed.begin(), removed.end(), k) != removed.end();
+                },
+                floor);
+        }
+        if (!ownMesh_)
+            ownMesh_.emplace(m_, components_);
+        return ownMesh_->farthest(
+            points, [&](std::int32_t k) { return std::binary_search(members.begin(), members.end(), std::size_t(k)); },
+            floor);
+    }
+
+private:
+    // The model's components the faces of `members` came from, sorted (faces made since,
+    // a tunnel's caps, have none).
+    std::vector<std::int32_t> modelComponentsOf(const std::vector<std::size_t>& members) const
+    {
+        std::vector<std::int32_t> own;
+        for (std::size_t c : members)
+            for (const FaceType* f : components_[c].faces) {
+                const std::size_t i = std::size_t(f - &m_.face[0]);
+                if (i < ctx_.modelComponentOf.size() && ctx_.modelComponentOf[i] >= 0)
+                    own.push_back(ctx_.modelComponentOf[i]);
+            }
+        std::sort(own.begin(), own.end());
+        own.erase(std::unique(own.begin(), own.end()), own.end());
+        return own;
+    }
+
+    MeshType& m_;
+    const std::vector<Component<MeshType>>& components_;
+    const Context& ctx_;
+    bool measure_;
+    std::optional<ComponentSurfaces> ownMesh_;
+};
 
 }  // namespace cadlod
