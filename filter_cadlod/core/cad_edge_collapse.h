@@ -186,6 +186,13 @@ struct CollapseContext : public vcg::BaseParameterClass {
     // leaves (component_removal.h). Null: the session's mesh is the whole model.
     std::shared_ptr<const ComponentSurfaces> modelComponents;
     std::vector<std::int32_t> modelComponentOf;
+    // The model's component face f came from; -1: none (no model index, or a face made since,
+    // a tunnel's cap).
+    std::int32_t modelComponentOfFace(const typename MeshType::FaceType* f) const
+    {
+        const std::size_t i = std::size_t(f - faceBase);
+        return i < modelComponentOf.size() ? modelComponentOf[i] : -1;
+    }
     // The model's components this session removed whole: gone for its own later removals at
     // once, for every piece's from the next level on (CollapseBuckets::collapse), so that
     // the pieces' sessions do not depend on the order they run in.

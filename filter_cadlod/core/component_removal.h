@@ -107,12 +107,9 @@ public:
         if (ctx.farField)
             for (const FaceType* f : c.faces)
                 ctx.farField->dropPointsOf(f);
-        if (ctx.modelComponents)
-            for (const FaceType* f : c.faces) {
-                const std::size_t i = std::size_t(f - &m.face[0]);
-                if (i < ctx.modelComponentOf.size() && ctx.modelComponentOf[i] >= 0)
-                    ctx.modelComponentsRemoved.push_back(ctx.modelComponentOf[i]);
-            }
+        for (const FaceType* f : c.faces)
+            if (const std::int32_t k = ctx.modelComponentOfFace(f); k >= 0)
+                ctx.modelComponentsRemoved.push_back(k);
         removeComponent(m, c);
         ctx.stats->removedComponents += pieces_;
         ctx.stats->largestRemovedComponent = std::max(ctx.stats->largestRemovedComponent, size_);

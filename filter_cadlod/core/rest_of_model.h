@@ -156,15 +156,9 @@ public:
             return floor;
         const std::vector<vcg::Point3d> points = extremePoints(vertices);
         if (ctx_.modelComponents) {
-            const std::vector<std::int32_t> own = modelComponentsOf(members);
-            const std::vector<std::int32_t>& removed = ctx_.modelComponentsRemoved;
+            const std::vector<std::int32_t> skipped = ownAndRemoved(members);
             return ctx_.modelComponents->farthest(
-                points,
-                [&](std::int32_t k) {
-                    return std::binary_search(own.begin(), own.end(), k) ||
-                           std::find(removed.begin(), removed.end(), k) != removed.end();
-                },
-                floor);
+                points, [&](std::int32_t k) { return std::binary_search(skipped.begin(), skipped.end(), k); }, floor);
         }
         if (!ownMesh_)
             ownMesh_.emplace(m_, components_);
@@ -174,20 +168,19 @@ public:
     }
 
 private:
-    // The model's components the faces of `members` came from, sorted (faces made since,
-    // a tunnel's caps, have none).
-    std::vector<std::int32_t> modelComponentsOf(const std::vector<std::size_t>& members) const
+    // The model's components no distance is measured to, sorted: those the faces of
+    // `members` came from, and those this session removed (the index marks the other
+    // pieces' removals only between levels).
+    std::vector<std::int32_t> ownAndRemoved(const std::vector<std::size_t>& members) const
     {
-        std::vector<std::int32_t> own;
+        std::vector<std::int32_t> skipped = ctx_.modelComponentsRemoved;
         for (std::size_t c : members)
-            for (const FaceType* f : components_[c].faces) {
-                const std::size_t i = std::size_t(f - &m_.face[0]);
-                if (i < ctx_.modelComponentOf.size() && ctx_.modelComponentOf[i] >= 0)
-                    own.push_back(ctx_.modelComponentOf[i]);
-            }
-        std::sort(own.begin(), own.end());
-        own.erase(std::unique(own.begin(), own.end()), own.end());
-        return own;
+            for (const FaceType* f : components_[c].faces)
+                if (const std::int32_t k = ctx_.modelComponentOfFace(f); k >= 0)
+                    skipped.push_back(k);
+        std::sort(skipped.begin(), skipped.end());
+        skipped.erase(std::unique(skipped.begin(), skipped.end()), skipped.end());
+        return skipped;
     }
 
     MeshType& m_;
