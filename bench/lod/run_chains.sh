@@ -2,7 +2,8 @@
 # Builds chain_bench (build-bench/) and runs it on the demo assembly, the generated bench
 # assembly and board, the KiCad VRML exports of the CAD corpus (made by
 # scripts/make_cad_corpus.sh when missing) and a populated board of 70 of them (177 parts,
-# 298k triangles: bench/lod/make_board.py); writes the table and one plot of triangles
+# 298k triangles: bench/lod/make_board.py) and, from ../shared/corpus, an office with
+# thousands of non-manifold edges; writes the table and one plot of triangles
 # against distance per mesh (gnuplot, both chains).
 # With --verify, each of cadlod's levels is also measured again independently (other
 # random points, 20 per input face and at least a million per side): OUTDIR/verify.md gives
@@ -20,6 +21,10 @@ cmake --build "$build" -j 2 --target chain_bench
 mapfile -t wrl < <(find "$corpus" -name '*.wrl' | sort)
 python3 "$ROOT/bench/lod/make_board.py" "$corpus/wrl" 70 "$out/board70.wrl"
 wrl+=("$out/board70.wrl")
+# A third-party model with 2 494 non-manifold edges (an office modelled by hand), when the
+# shared corpus is beside the project.
+office="$ROOT/../shared/corpus/castle-demo-models/lights_materials/raytracer/office.wrl"
+[ -f "$office" ] && wrl+=("$office")
 {
   echo "Command: bench/lod/run_chains.sh; cadlod at $(git -C "$ROOT" rev-parse --short HEAD), $(date -u +%Y-%m-%d)."
   echo

@@ -411,3 +411,35 @@ TEST(LodChain, AHalfwayCopyNoPlannedLevelLightensIsKept)
     }
     EXPECT_TRUE(between) << "levels:" << faces;
 }
+
+// A fin welded around a tube: the ring under it has edges of three faces, whose vertices no
+// collapse may move. The chain cuts the fin off along them (said in its first level's log)
+// and its levels go lighter than the ring: a level of fewer faces than the ring has vertices
+// is drawn before the proxies, each level within its pixel error, measured again.
+TEST(LodChain, AFinWeldedOnARingIsCutOffSoTheRingSimplifiesToo)
+{
+    const int segments = 128;
+    CadBuilder b;
+    tubeWithFin(b, segments);
+    LodChainOptions options;
+    Chain c(b, options);
+    ASSERT_TRUE(c.result.ok()) << c.result.error;
+    const auto& first = c.result.steps.front().relaxed;
+    EXPECT_TRUE(std::any_of(first.begin(), first.end(), [&](const std::string& line) {
+        return line.find("cut apart along " + std::to_string(segments) + " of " + std::to_string(segments) +
+                         " non-manifold edges") != std::string::npos;
+    }));
+    int lightest = c.result.levels.front().faces;
+    for (std::size_t k = 1; k < c.result.levels.size(); ++k) {
+        const auto& lines = c.result.steps[k - 1].relaxed;
+        const bool proxy = std::any_of(lines.begin(), lines.end(),
+                                       [](const std::string& line) { return line.find(" proxy: ") != std::string::npos; });
+        if (!proxy)
+            lightest = std::min(lightest, c.result.levels[k].faces);
+        TestMesh& m = c.level(k);
+        EXPECT_LE(projectedPixels(remeasuredError(c.input, m, 4), c.result.levels[k].switchOut, options.view),
+                  options.view.pixelThreshold * 1.05)
+            << "level " << k << " (" << m.fn << " faces)";
+    }
+    EXPECT_LT(lightest, segments);
+}

@@ -229,6 +229,27 @@ inline int drilledPlate(CadBuilder& b, double side, double thickness, double hol
     return first;
 }
 
+// A closed tube of radius 10 and length 40 (part 0), `segments` around, with a ring
+// halfway, and a fin (part 1: an annulus out to radius 20) welded onto that ring, as a
+// welded casting or a flange modelled on a body comes out: every edge of the ring has three
+// faces, two of the tube and one of the fin.
+inline void tubeWithFin(CadBuilder& b, int segments)
+{
+    RevolveSpec spec;
+    spec.segments = segments;
+    spec.cylinderRings = 2;
+    b.currentPart = 0;
+    const int first = revolve(b, {{0, 0}, {0, 10}, {40, 10}, {40, 0}}, spec);
+    std::vector<int> ring(segments), outer(segments);
+    for (int j = 0; j < segments; ++j) {
+        ring[j] = first + 1 + segments + j;  // after the end's centre and the first ring
+        const double t = 2 * M_PI * j / segments;
+        outer[j] = b.addPoint(20 * std::cos(t), 20 * std::sin(t), 20);
+    }
+    b.currentPart = 1;
+    ringBand(b, ring, outer);
+}
+
 // A small multi-part assembly: a shaft, a base plate, two bolts (separate parts).
 inline void assembly(CadBuilder& b, int segments)
 {
