@@ -333,9 +333,6 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     // after level (the quadrics carry the whole history).
     detail::copyWithParts(working, original);
     vcg::tri::Allocator<MeshType>::CompactEveryVector(working);
-    // A level is held to its measured error, not to the input's topology: the faces at a
-    // non-manifold edge, whose vertices no collapse may move, are cut apart into fans.
-    const NonManifoldSplit split = splitNonManifoldEdges(working);
     SimplifyParams params = options.simplify;
     params.targetFaces = 0;
     params.reductionPerc = 0.0;
@@ -360,11 +357,10 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     params.featurePenalty *= kChainFeaturePenaltyShare;
     SimplifyStats stats;
     stats.facesBefore = working.fn;
-    if (split.edges > 0)
-        stats.relaxed.push_back("cut apart along " + std::to_string(split.edges - split.edgesLeft) + " of " +
-                                std::to_string(split.edges) +
-                                " non-manifold edges (edges of three faces or more), whose vertices no collapse "
-                                "may move: " + std::to_string(split.vertexCopies) + " vertices copied");
+    // A level is held to its measured error, not to the input's topology: the faces at a
+    // non-manifold edge, whose vertices no collapse may move, are cut apart into fans.
+    if (params.relaxToReachTarget)
+        cutNonManifoldEdges(working, stats);
     std::string why;
     if (!detail::validateParams(params, why)) {
         result.error = why;

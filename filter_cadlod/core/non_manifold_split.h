@@ -13,15 +13,19 @@
 // face's edge becomes a boundary, which has its boundary quadrics (a feature that gives
 // way only where the level's budget allows it); the pieces stay one touch group for
 // whole-part removals (component_removal.h). An edge whose faces still meet around both
-// its ends (joined the long way round) stays as it was, locked.
+// its ends (joined the long way round), or that holds a face twice (the same three
+// vertices), stays as it was, locked.
 #pragma once
 
-#include "metadata/layer_metadata.h"
+#include "layer_metadata.h"
+#include "simplify_params.h"
 
 #include <vcg/complex/complex.h>
 
 #include <algorithm>
+#include <array>
 #include <numeric>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -106,6 +110,22 @@ std::pair<std::size_t, std::size_t> continuingPair(MeshType& m, const std::vecto
     return best;
 }
 
+// True if two of `faces` (indices into m.face) have the same three vertices: a surface
+// written twice (both sides of a sheet, a part exported twice). A twin cut off would stay
+// where it is, over the surface its other half simplifies away from.
+template <class MeshType>
+bool holdsTwins(MeshType& m, const std::vector<std::size_t>& faces)
+{
+    std::vector<std::array<const void*, 3>> corners;
+    for (std::size_t f : faces) {
+        std::array<const void*, 3> c{m.face[f].cV(0), m.face[f].cV(1), m.face[f].cV(2)};
+        std::sort(c.begin(), c.end());
+        corners.push_back(c);
+    }
+    std::sort(corners.begin(), corners.end());
+    return std::adjacent_find(corners.begin(), corners.end()) != corners.end();
+}
+
 // The fans around `v`: per face in `around`, the root of its fan in `parent`. True if some
 // edge at `v` has three faces or more (counted in `edges` when `v` is its lower end).
 template <class MeshType>
@@ -135,9 +155,12 @@ bool fansAround(MeshType& m, typename MeshType::VertexType& v, const std::vector
             faces.clear();
             for (std::size_t e : byFace)
                 faces.push_back(faceOf(e));
-            const auto [p, q] = continuingPair(m, faces, &v, ends[i].first);
-            if (p != q)
+            if (holdsTwins(m, faces)) {  // one surface written twice: cutting frees neither
+                for (std::size_t k = i + 1; k < j; ++k)
+                    join(ends[i].second, ends[k].second);
+            } else if (const auto [p, q] = continuingPair(m, faces, &v, ends[i].first); p != q) {
                 join(ends[byFace[p]].second, ends[byFace[q]].second);
+            }
         }
         i = j;
     }
@@ -146,8 +169,8 @@ bool fansAround(MeshType& m, typename MeshType::VertexType& v, const std::vector
 
 }  // namespace detail
 
-// Cuts `m` apart along its non-manifold edges as described above. `m` needs per-vertex
-// VF adjacency (rebuilt here, before and after) and no deleted elements.
+// Cuts `m` apart along its non-manifold edges as described above (its VF adjacency is
+// rebuilt, before and after).
 template <class MeshType>
 NonManifoldSplit splitNonManifoldEdges(MeshType& m)
 {
@@ -209,6 +232,18 @@ NonManifoldSplit splitNonManifoldEdges(MeshType& m)
         }
     }
     return result;
+}
+
+// Cuts `m` apart as above and, where it had such edges, says so in `stats.relaxed`.
+template <class MeshType>
+void cutNonManifoldEdges(MeshType& m, SimplifyStats& stats)
+{
+    const NonManifoldSplit split = splitNonManifoldEdges(m);
+    if (split.edges > 0)
+        stats.relaxed.push_back("cut apart along " + std::to_string(split.edges - split.edgesLeft) + " of " +
+                                std::to_string(split.edges) +
+                                " non-manifold edges (edges of three faces or more), whose vertices no collapse "
+                                "may move: " + std::to_string(split.vertexCopies) + " vertices copied");
 }
 
 }  // namespace cadlod

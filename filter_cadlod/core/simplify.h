@@ -9,6 +9,7 @@
 #include "collapse_heap.h"
 #include "component_removal.h"
 #include "layer_metadata.h"
+#include "non_manifold_split.h"
 #include "simplify_params.h"
 #include "tunnel_cut.h"
 
@@ -445,6 +446,10 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
         return stats;
     }
 
+    // An edge of three faces or more would hold its vertices for good (feature_edges.h), and
+    // a target would be reached by removing whole parts instead: it is cut apart first.
+    if (params.relaxToReachTarget)
+        cutNonManifoldEdges(m, stats);
     CollapseContext<MeshType> ctx;
     if (prepareCollapse(m, params, ctx, stats)) {
         std::vector<VertexType*> frozen;
