@@ -40,7 +40,7 @@ void addProtectionOptions(CLI::App& app, ProtectionArgs& a)
     app.add_flag("--no-colour-borders,--no-color-borders", a.noColorBorders,
                  "Edges between colours (materials) are not features");
     app.add_flag("--no-boundary", a.noBoundary, "Open boundaries get no constraint quadrics");
-    app.add_flag("--no-relax", a.noRelax, "Stop early rather than relax the shape guards or remove components");
+    app.add_flag("--no-relax", a.noRelax, "Stop early rather than cut non-manifold edges apart, relax the shape guards or remove components");
     app.add_flag("--keep-tunnels", a.keepTunnels,
                  "Never cut and cap a tunnel (a through-hole) whose rim has shrunk to three edges");
 }

@@ -55,7 +55,7 @@ void addPlacementParameters(RichParameterList& par)
     par.addParam(RichBool("planarQuadric", d.planarQuadric, "Planar quadrics",
                           "Tiny extra quadrics on every edge: steadier flat regions."));
     par.addParam(RichBool("relaxToReachTarget", d.relaxToReachTarget, "Reach the target",
-                          "When blocked: allow less compact triangles, then drop small parts (logged)."));
+                          "Cut non-manifold edges apart; when blocked: allow less compact triangles, then drop small parts (logged)."));
     addFeatureParameters(par);
 }
 

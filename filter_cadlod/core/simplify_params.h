@@ -83,8 +83,9 @@ struct SimplifyParams {
     // What a collapse that breaks a feature (crosses a crease, moves a corner or boundary
     // vertex) is ranked at: this many times its quadric cost. 0: features are hard locks.
     double featurePenalty = 4.0;
-    // When the face target is not reached with the shape guards on, relax them; then
-    // remove the smallest connected components whole (each logged). Off: stop early.
+    // Cut non-manifold edges apart first (non_manifold_split.h); when the face target is not
+    // reached with the shape guards on, relax them; then remove the smallest connected
+    // components whole (each logged). Off: stop early, non-manifold edges locked.
     bool relaxToReachTarget = true;
     bool selectedOnly = false;       // only collapse vertices whose faces are all selected
     // A mesh with at least this many faces is first collapsed as two halves side by side
