@@ -1,12 +1,14 @@
-// Cutting a mesh apart along its non-manifold edges, for the levels of a LOD chain.
+// Cutting a mesh apart along its non-manifold edges before it is simplified (a LOD chain's
+// levels, a simplification toward a target; not with SimplifyParams::relaxToReachTarget off).
 //
 // An edge shared by three or more faces (a fin welded around a tube, a cap fanned over a
 // rim it overlaps, two boxes welded where their edges meet) locks both its vertices for
 // good (feature_edges.h): no collapse at such an edge keeps its faces consistent. A model
 // with thousands of them (a hand-modelled room, a robot's welded castings) keeps every
-// face around them in every level of its chain, however far it is seen from. A chain
-// level is held to a measured distance, not to the input's topology, so there each such
-// edge keeps the two faces that continue each other (the pair that runs the edge in
+// face around them in every level of its chain, however far it is seen from, and reaches
+// a face target only by removing whole parts. A level is held to a measured distance and a
+// simplification to its error, not to the input's topology, so each such edge keeps the
+// two faces that continue each other (the pair that runs the edge in
 // opposite directions, of one part if any, whose normals agree most: the tube under the
 // fin) and lets go of the others. Around each vertex the faces joined across kept edges
 // form fans, and every fan but the first gets a copy of the vertex of its own. Each let-go
