@@ -365,8 +365,7 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
     stats.facesBefore = working.fn;
     // A level is held to its measured error, not to the input's topology: the faces at a
     // non-manifold edge, whose vertices no collapse may move, are cut apart into fans.
-    if (params.relaxToReachTarget)
-        cutNonManifoldEdges(working, stats);
+    cutNonManifoldEdges(working, params, stats);
     std::string why;
     if (!detail::validateParams(params, why)) {
         result.error = why;

@@ -75,6 +75,20 @@ void facesAround(MeshType& m, typename MeshType::VertexType& v, std::vector<Face
     std::sort(ends.begin(), ends.end());
 }
 
+// Calls `edge(i, j)` for each edge at a vertex: the run ends[i, j) of its faces (`ends` as
+// facesAround sorts them, by the edge's other end).
+template <class End, class EdgeRun>
+void forEachEdgeRun(const std::vector<End>& ends, const EdgeRun& edge)
+{
+    for (std::size_t i = 0; i < ends.size();) {
+        std::size_t j = i + 1;
+        while (j < ends.size() && ends[j].first == ends[i].first)
+            ++j;
+        edge(i, j);
+        i = j;
+    }
+}
+
 // Of the faces `faces` (indices into m.face, sorted) around the edge from `a` to `b`, the
 // two that continue each other, as positions in `faces`; {0, 0} when no two run the edge
 // in opposite directions. The same whichever end asks, so both ends keep the same pair.
@@ -140,10 +154,7 @@ bool fansAround(MeshType& m, typename MeshType::VertexType& v, const std::vector
     auto join = [&](std::size_t x, std::size_t y) { parent[rootOf(parent, x)] = rootOf(parent, y); };
     bool nonManifold = false;
     std::vector<std::size_t> faces;
-    for (std::size_t i = 0; i < ends.size();) {
-        std::size_t j = i + 1;
-        while (j < ends.size() && ends[j].first == ends[i].first)
-            ++j;
+    forEachEdgeRun(ends, [&](std::size_t i, std::size_t j) {
         if (j - i == 2) {
             join(ends[i].second, ends[i + 1].second);
         } else if (j - i > 2) {
@@ -164,8 +175,7 @@ bool fansAround(MeshType& m, typename MeshType::VertexType& v, const std::vector
                 join(ends[byFace[p]].second, ends[byFace[q]].second);
             }
         }
-        i = j;
-    }
+    });
     return nonManifold;
 }
 
@@ -225,21 +235,20 @@ NonManifoldSplit splitNonManifoldEdges(MeshType& m)
         if (v.IsD())
             continue;
         detail::facesAround(m, v, around, ends);
-        for (std::size_t i = 0; i < ends.size();) {
-            std::size_t j = i + 1;
-            while (j < ends.size() && ends[j].first == ends[i].first)
-                ++j;
+        detail::forEachEdgeRun(ends, [&](std::size_t i, std::size_t j) {
             result.edgesLeft += j - i > 2 && ends[i].first > &v;
-            i = j;
-        }
+        });
     }
     return result;
 }
 
-// Cuts `m` apart as above and, where it had such edges, says so in `stats.relaxed`.
+// Cuts `m` apart as above, unless `params` keeps every lock (relaxToReachTarget off), and,
+// where it had such edges, says so in `stats.relaxed`.
 template <class MeshType>
-void cutNonManifoldEdges(MeshType& m, SimplifyStats& stats)
+void cutNonManifoldEdges(MeshType& m, const SimplifyParams& params, SimplifyStats& stats)
 {
+    if (!params.relaxToReachTarget)
+        return;
     const NonManifoldSplit split = splitNonManifoldEdges(m);
     if (split.edges > 0)
         stats.relaxed.push_back("cut apart along " + std::to_string(split.edges - split.edgesLeft) + " of " +

@@ -448,8 +448,7 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
 
     // An edge of three faces or more would hold its vertices for good (feature_edges.h), and
     // a target would be reached by removing whole parts instead: it is cut apart first.
-    if (params.relaxToReachTarget)
-        cutNonManifoldEdges(m, stats);
+    cutNonManifoldEdges(m, params, stats);
     CollapseContext<MeshType> ctx;
     if (prepareCollapse(m, params, ctx, stats)) {
         std::vector<VertexType*> frozen;
