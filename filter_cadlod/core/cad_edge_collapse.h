@@ -424,7 +424,8 @@ public:
         if (!feasible_)
             return false;
         if (ctx.params.preserveTopology && !topologyGivesWay(ctx) &&
-            !vcg::tri::EdgeCollapser<MeshType, VertexPair>::LinkConditions(this->pos) &&
+            (!vcg::tri::EdgeCollapser<MeshType, VertexPair>::LinkConditions(this->pos) ||
+             makesNonManifoldEdge(this->pos.V(0), this->pos.V(1))) &&
             !(ctx.inFarField() && foldsTetrahedron(this->pos.V(0), this->pos.V(1)))) {
             ++ctx.stats->rejectedTopology;
             TunnelCut<MeshType>::offer(ctx, this->pos.V(0), this->pos.V(1));
@@ -590,6 +591,45 @@ private:
     // opposite orientation), a hole close, two touching parts collapse into one another, where
     // the level's budget allows; an edge may then have more than two faces.
     static bool topologyGivesWay(const Context& ctx) { return ctx.heldToDistance() && ctx.params.closeTunnels; }
+
+    // Whether collapsing v0 into v1 leaves an edge with more than two faces that had at most
+    // two. vcglib's link condition counts a boundary vertex's link as one run of neighbours
+    // and so misses collapses beside a vertex where two boundary runs meet (a pinch, common in
+    // hand-modelled meshes: the trees of the castle demo's forest, a scanned figure), after
+    // which the faces of (v0,x) and of (v1,x) share one edge. Counted directly: after the
+    // collapse, edge (v1,x) carries the faces of (v1,x) and of (v0,x) that do not vanish
+    // with the edge.
+    static bool makesNonManifoldEdge(VertexType* v0, VertexType* v1)
+    {
+        struct Use {
+            VertexType* x;
+            int from0, from1;
+        };
+        std::vector<Use> uses;  // a ring's neighbours: a linear search is cheapest
+        auto count = [&](VertexType* x, bool of0) {
+            for (Use& u : uses)
+                if (u.x == x) {
+                    ++(of0 ? u.from0 : u.from1);
+                    return;
+                }
+            uses.push_back({x, of0 ? 1 : 0, of0 ? 0 : 1});
+        };
+        for (VertexType* v : {v0, v1}) {
+            VertexType* other = v == v0 ? v1 : v0;
+            for (VFIterator vfi(v); !vfi.End(); ++vfi) {
+                VertexType* a = vfi.V1();
+                VertexType* b = vfi.V2();
+                if (a == other || b == other)
+                    continue;  // vanishes with the edge
+                count(a, v == v0);
+                count(b, v == v0);
+            }
+        }
+        for (const Use& u : uses)
+            if (u.from0 > 0 && u.from1 > 0 && u.from0 <= 2 && u.from1 <= 2 && u.from0 + u.from1 > 2)
+                return true;
+        return false;
+    }
 
     // A quadric minimum off the edge would turn a face away from the input surface: on a
     // convex surface the minimum lies outside the chords, and where another part fits
