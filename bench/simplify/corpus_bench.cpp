@@ -250,9 +250,20 @@ Row runOne(const PartContext& ctx, const std::string& tool, double reduction, in
     return r;
 }
 
+// A run's time limit: a minute, plus a second per 2 000 input triangles (4M: 35 min). Far
+// beyond any tool's time on the corpus; it only stops a peer that loops.
+unsigned timeLimitSeconds(int triangles) { return 60u + unsigned(triangles / 2000); }
+
 Row runForked(const PartContext& ctx, const std::string& tool, double reduction, int target)
 {
-    return cadlod::bench::runForked<Row>([&] { return runOne(ctx, tool, reduction, target); });
+    bool timedOut = false;
+    const unsigned limit = timeLimitSeconds(ctx.original->fn);
+    const Row r = cadlod::bench::runForked<Row>([&] { return runOne(ctx, tool, reduction, target); }, limit,
+                                                &timedOut);
+    if (timedOut)
+        std::fprintf(stderr, "%s on %s at %g %%: stopped after %u s (counted as failed)\n", tool.c_str(),
+                     ctx.part->name.c_str(), reduction, limit);
+    return r;
 }
 
 std::set<std::string> heldOutIds(const std::string& manifest)
