@@ -45,6 +45,7 @@
 #include "far_field.h"
 #include "feature_edges.h"
 #include "input_surface.h"
+#include "link_condition.h"
 #include "simplify_params.h"
 
 #include <vcg/complex/algorithms/edge_collapse.h>
@@ -177,6 +178,9 @@ struct CollapseContext : public vcg::BaseParameterClass {
     double largestDistance = 0.0; // over operations held to maxDistance (far field)
     double largestFeatureBreak = 0.0;  // largest error of an executed collapse that broke a feature
     bool shapeGuards = true;      // minCompactness and the free-sliver guard apply (relaxed last)
+    // Toward a face target: collapses that close a hole or join boundary runs are offered,
+    // priced (link_condition.h). A session held to an error ends where they would begin.
+    bool joinBoundaries = false;
     typename vcg::LocalOptimization<MeshType>::HeapType* heap = nullptr;  // for re-queued entries
     std::vector<RingFace> ring;   // scratch of the edge being evaluated
     int mark = 0;                 // this session's clock: ticks at every collapse (vcglib's GlobalMark)
@@ -423,10 +427,12 @@ public:
         }
         if (!feasible_)
             return false;
-        if (ctx.params.preserveTopology && !topologyGivesWay(ctx) &&
-            (!vcg::tri::EdgeCollapser<MeshType, VertexPair>::LinkConditions(this->pos) ||
-             makesNonManifoldEdge(this->pos.V(0), this->pos.V(1))) &&
+        if (ctx.params.preserveTopology && !topologyGivesWay(ctx) && !joinsBoundary_ &&
+            !(vcg::tri::EdgeCollapser<MeshType, VertexPair>::LinkConditions(this->pos) &&
+              !makesNonManifoldEdge(this->pos.V(0), this->pos.V(1))) &&
             !(ctx.inFarField() && foldsTetrahedron(this->pos.V(0), this->pos.V(1)))) {
+            if (ctx.joinBoundaries && joinsBoundaryOnly(this->pos.V(0), this->pos.V(1)))
+                return priceJoiningBoundary(ctx);
             ++ctx.stats->rejectedTopology;
             TunnelCut<MeshType>::offer(ctx, this->pos.V(0), this->pos.V(1));
             return false;
@@ -475,6 +481,8 @@ public:
         for (VertexType* x : featureApex)
             markEdge(ctx, v1, x);
         ctx.recordError(error_, distance_);
+        if (joinsBoundary_)
+            ++ctx.stats->boundaryJoins;
         if (breaksFeature_) {
             ++ctx.stats->featureBreaks;
             ctx.largestFeatureBreak = std::max(ctx.largestFeatureBreak, double(error_));
@@ -592,45 +600,6 @@ private:
     // the level's budget allows; an edge may then have more than two faces.
     static bool topologyGivesWay(const Context& ctx) { return ctx.heldToDistance() && ctx.params.closeTunnels; }
 
-    // Whether collapsing v0 into v1 leaves an edge with more than two faces that had at most
-    // two. vcglib's link condition counts a boundary vertex's link as one run of neighbours
-    // and so misses collapses beside a vertex where two boundary runs meet (a pinch, common in
-    // hand-modelled meshes: the trees of the castle demo's forest, a scanned figure), after
-    // which the faces of (v0,x) and of (v1,x) share one edge. Counted directly: after the
-    // collapse, edge (v1,x) carries the faces of (v1,x) and of (v0,x) that do not vanish
-    // with the edge.
-    static bool makesNonManifoldEdge(VertexType* v0, VertexType* v1)
-    {
-        struct Use {
-            VertexType* x;
-            int from0, from1;
-        };
-        std::vector<Use> uses;  // a ring's neighbours: a linear search is cheapest
-        auto count = [&](VertexType* x, bool of0) {
-            for (Use& u : uses)
-                if (u.x == x) {
-                    ++(of0 ? u.from0 : u.from1);
-                    return;
-                }
-            uses.push_back({x, of0 ? 1 : 0, of0 ? 0 : 1});
-        };
-        for (VertexType* v : {v0, v1}) {
-            VertexType* other = v == v0 ? v1 : v0;
-            for (VFIterator vfi(v); !vfi.End(); ++vfi) {
-                VertexType* a = vfi.V1();
-                VertexType* b = vfi.V2();
-                if (a == other || b == other)
-                    continue;  // vanishes with the edge
-                count(a, v == v0);
-                count(b, v == v0);
-            }
-        }
-        for (const Use& u : uses)
-            if (u.from0 > 0 && u.from1 > 0 && u.from0 <= 2 && u.from1 <= 2 && u.from0 + u.from1 > 2)
-                return true;
-        return false;
-    }
-
     // A quadric minimum off the edge would turn a face away from the input surface: on a
     // convex surface the minimum lies outside the chords, and where another part fits
     // closely (a pin in its bore) that is across its surface. The points of the segment
@@ -645,6 +614,20 @@ private:
 
     // The collapse would turn a face away from the input surface: refused, or ranked at
     // facingPenalty times its priority (back into the heap when that is no longer the top).
+    // A collapse that closes a hole or joins boundary runs (link_condition.h) changes the
+    // topology where the viewer sees a surface closed a little early: ranked like a feature
+    // break, so that it runs when it is cheaper than what else is left.
+    bool priceJoiningBoundary(Context& ctx)
+    {
+        joinsBoundary_ = true;
+        this->_priority *= ScalarType(std::max(1.0, ctx.params.featurePenalty));
+        if (ctx.heap && !ctx.heap->empty() && this->_priority > ctx.heap->front().pri) {
+            requeue(*ctx.heap);
+            return false;
+        }
+        return true;
+    }
+
     bool priceTurningAway(Context& ctx)
     {
         if (ctx.facingPenalty <= 0) {
@@ -950,6 +933,7 @@ private:
         evaluated_ = true;
         evaluatedAt_ = ctx.mark;
         turnsAway_ = false;
+        joinsBoundary_ = false;
         feasible_ = true;
         breaksFeature_ = false;
         VertexType* v0 = this->pos.V(0);
@@ -1152,6 +1136,7 @@ private:
     bool breaksFeature_ = false;
     bool evaluated_ = false;
     bool turnsAway_ = false;  // a new face would turn away from the input surface: ranked at facingPenalty
+    bool joinsBoundary_ = false;  // closes a hole or joins boundary runs: ranked like a feature break
     bool free_ = false;       // costs no more than the flat floor
     bool offEdge_ = false;    // target_ is a quadric minimum off the segment
     bool onTheEdgeOnly_ = false;  // a minimum off the segment turned a face away: the segment's points only

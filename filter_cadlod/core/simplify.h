@@ -343,12 +343,14 @@ bool runHeap(vcg::LocalOptimization<MeshType>& session)
 //      faces) that check gives way, and toward a face target every operation is ranked by
 //      the largest distance it opens instead (far_field.h), both logged; and so is
 //      cutting a tunnel whose rim has shrunk to three edges, where the link condition
-//      refuses every collapse (tunnel_cut.h), logged;
+//      refuses every collapse (tunnel_cut.h), logged; and so is a collapse the link
+//      condition refuses that keeps every edge manifold: it closes a hole or joins
+//      boundary runs (link_condition.h), logged;
 //   2. the shape guards (minCompactness, no free slivers).
 // Flips of a face against itself (cad_edge_collapse.h's normal checks), the link condition
-// on collapses (no collapse changes the topology: only a priced cut does, and in the far
-// field the fold of a tetrahedron into a fin, far_field.h) and locked (non-manifold)
-// vertices never give way.
+// where a collapse would leave an edge with more than two faces (only a priced cut does,
+// and in the far field the fold of a tetrahedron into a fin, far_field.h) and locked
+// (non-manifold) vertices never give way.
 template <class MeshType>
 void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats& stats, vcg::CallBackPos* progress)
 {
@@ -359,6 +361,7 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
     // maximum error; the shape guards relax only toward a face target.
     const bool faceTarget = ctx.params.relaxToReachTarget && stats.targetFaces > 0;
     const bool removals = ctx.params.relaxToReachTarget && (stats.targetFaces > 0 || ctx.maxErrorAbs > 0);
+    ctx.joinBoundaries = faceTarget;
     auto fillHeap = [&] {
         session.template Init<Collapse>();
         if (removals)
@@ -411,6 +414,10 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
                       closed, closed == 1 ? "" : "s", ctx.diagonal > 0 ? 100 * stats.widestTunnelCap / ctx.diagonal : 0.0);
         stats.relaxed.push_back(line);
     }
+    if (stats.boundaryJoins > 0)
+        stats.relaxed.push_back(std::to_string(stats.boundaryJoins) +
+                                " collapses closed a hole or joined boundary runs where the link condition refused them "
+                                "(no edge got more than two faces; ranked like a feature break)");
     if (ctx.facingGaveWay)
         stats.relaxed.push_back("faces may turn away from the input surface below " + std::to_string(ctx.farFieldFloor) +
                                 " faces (the far field: under 5 % of the input)");

@@ -122,6 +122,7 @@ struct SimplifyStats {
     int removedComponents = 0;     // connected components removed whole
     double largestRemovedComponent = 0.0;  // bbox diagonal, model units
     int closedTunnels = 0;         // loops of three edges cut and capped (tunnel_cut.h)
+    int boundaryJoins = 0;         // collapses that closed a hole or joined boundary runs (link_condition.h)
     int halvesCollapses = 0;       // collapses made by two half sessions side by side (collapse_halves.h)
     int halvesBandVertices = 0;    // the band between the halves, frozen while they ran
     double widestTunnelCap = 0.0;  // the largest cap inradius, model units
@@ -139,7 +140,7 @@ inline constexpr int SimplifyStats::*kSessionCounts[] = {
     &SimplifyStats::degenerateFaces,     &SimplifyStats::collapses,       &SimplifyStats::rejectedFlip,
     &SimplifyStats::rejectedCompactness, &SimplifyStats::rejectedFeature, &SimplifyStats::rejectedError,
     &SimplifyStats::rejectedTopology,    &SimplifyStats::featureBreaks,   &SimplifyStats::removedComponents,
-    &SimplifyStats::closedTunnels,       &SimplifyStats::halvesCollapses};
+    &SimplifyStats::closedTunnels,       &SimplifyStats::boundaryJoins,   &SimplifyStats::halvesCollapses};
 
 // The face count the stop criteria translate to for an input of `faces` faces
 // (0 when only maxError is set).
