@@ -1,7 +1,7 @@
 // Runs one benchmark case in a child process, so that its peak memory and any crash belong
 // to that run alone; the result (trivially copyable) comes back through a pipe. A run that
 // goes on past its time limit is stopped (SIGALRM) and counts as failed: a peer that loops
-// on some input (CGAL's edge collapse on the castle teapot, whose input is not a manifold)
+// on some input (CGAL's edge collapse on two castle demo models, alien_mirror and the office)
 // must not stall the whole bench.
 #pragma once
 

@@ -420,10 +420,8 @@ public:
         Context& ctx = *static_cast<Context*>(pp);
         if (!evaluated_ || ringChangedSinceEvaluation(ctx)) {
             evaluate(ctx);
-            if (feasible_ && ctx.heap && !ctx.heap->empty() && this->_priority > ctx.heap->front().pri) {
-                requeue(*ctx.heap);
+            if (feasible_ && !stillFirst(ctx))
                 return false;
-            }
         }
         if (!feasible_)
             return false;
@@ -612,15 +610,10 @@ private:
         return IsFeasible(&ctx);
     }
 
-    // The collapse would turn a face away from the input surface: refused, or ranked at
-    // facingPenalty times its priority (back into the heap when that is no longer the top).
-    // A collapse that closes a hole or joins boundary runs (link_condition.h) changes the
-    // topology where the viewer sees a surface closed a little early: ranked like a feature
-    // break, so that it runs when it is cheaper than what else is left.
-    bool priceJoiningBoundary(Context& ctx)
+    // Whether this entry, its priority raised since it was pushed, is still no dearer than
+    // the heap's top; if not, it goes back into the heap to wait its turn.
+    bool stillFirst(Context& ctx) const
     {
-        joinsBoundary_ = true;
-        this->_priority *= ScalarType(std::max(1.0, ctx.params.featurePenalty));
         if (ctx.heap && !ctx.heap->empty() && this->_priority > ctx.heap->front().pri) {
             requeue(*ctx.heap);
             return false;
@@ -628,6 +621,18 @@ private:
         return true;
     }
 
+    // A collapse that closes a hole or joins boundary runs (link_condition.h) changes the
+    // topology where the viewer sees a surface closed a little early: ranked like a feature
+    // break, so that it runs when it is cheaper than what else is left.
+    bool priceJoiningBoundary(Context& ctx)
+    {
+        joinsBoundary_ = true;
+        this->_priority *= ScalarType(std::max(1.0, ctx.params.featurePenalty));
+        return stillFirst(ctx);
+    }
+
+    // The collapse would turn a face away from the input surface: refused, or ranked at
+    // facingPenalty times its priority (back into the heap when that is no longer the top).
     bool priceTurningAway(Context& ctx)
     {
         if (ctx.facingPenalty <= 0) {
@@ -636,11 +641,7 @@ private:
         }
         turnsAway_ = true;
         this->_priority *= ScalarType(ctx.facingPenalty);
-        if (ctx.heap && !ctx.heap->empty() && this->_priority > ctx.heap->front().pri) {
-            requeue(*ctx.heap);
-            return false;
-        }
-        return true;
+        return stillFirst(ctx);
     }
 
     // Before the far field, with the input's points dealt: whether the collapse about to run
