@@ -46,6 +46,7 @@
 #include "feature_edges.h"
 #include "input_surface.h"
 #include "link_condition.h"
+#include "removal_log.h"
 #include "simplify_params.h"
 
 #include <vcg/complex/algorithms/edge_collapse.h>
@@ -181,6 +182,7 @@ struct CollapseContext : public vcg::BaseParameterClass {
     // Toward a face target: collapses that close a hole or join boundary runs are offered,
     // priced (link_condition.h). A session held to an error ends where they would begin.
     bool joinBoundaries = false;
+    RemovalLog removals;          // the log's lines of components removed whole, one per name
     typename vcg::LocalOptimization<MeshType>::HeapType* heap = nullptr;  // for re-queued entries
     std::vector<RingFace> ring;   // scratch of the edge being evaluated
     int mark = 0;                 // this session's clock: ticks at every collapse (vcglib's GlobalMark)

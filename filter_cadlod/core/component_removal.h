@@ -114,14 +114,7 @@ public:
         ctx.stats->removedComponents += pieces_;
         ctx.stats->largestRemovedComponent = std::max(ctx.stats->largestRemovedComponent, size_);
         ctx.recordError(distance_, distance_);
-        const double percent = ctx.diagonal > 0 ? 100.0 / ctx.diagonal : 0.0;
-        char standingOff[64] = "";
-        if (distance_ > size_)
-            std::snprintf(standingOff, sizeof standingOff, ", standing %.4g %% off the rest", percent * distance_);
-        char line[320];
-        std::snprintf(line, sizeof line, "removed %s whole (%zu faces, size %.4g %% of the diagonal%s)", name_.c_str(),
-                      c.faces.size(), percent * size_, standingOff);
-        ctx.stats->relaxed.push_back(line);
+        ctx.removals.add(ctx.stats->relaxed, name_, c.faces.size(), size_, distance_, ctx.diagonal);
     }
 
 private:

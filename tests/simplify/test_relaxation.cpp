@@ -124,6 +124,56 @@ TEST(SimplifyRelaxation, SmallestComponentsAreRemovedWholeAndLogged)
     EXPECT_LT(distanceToSurface(m, vcg::Point3d(100, 100, 0)), 0.01);
 }
 
+// A scene of many copies of one name (a forest of trees all called "Mesh") logs one line
+// for that name, with the count, not a line per copy; pieces without a part name share one.
+TEST(SimplifyRelaxation, RemovalsOfOneNameAreLoggedOnOneLine)
+{
+    CadBuilder b;
+    b.currentPart = 0;
+    stripPlate(b, 100, 100, 10, 4);
+    for (int i = 0; i < 20; ++i) {
+        b.currentPart = 1 + i;
+        const int first = stripPlate(b, 2, 2, 2, 1);
+        b.translate(first, 5 * i, 0, 10);
+    }
+    for (const bool named : {true, false}) {
+        TestMesh m;
+        b.build(m, named);
+        if (named)
+            for (std::size_t p = 1; p < cadlod::partTableHandle(m)().size(); ++p)
+                cadlod::partTableHandle(m)()[p].name = "Mesh";
+        SimplifyParams params;
+        params.targetFaces = 40;
+        const SimplifyStats s = simplify(m, params);
+        ASSERT_TRUE(s.ok) << s.message;
+        ASSERT_GT(s.removedComponents, 1);
+        const std::string expected = named ? std::to_string(s.removedComponents) + " pieces of Mesh whole"
+                                           : std::to_string(s.removedComponents) + " unnamed components whole";
+        int removalLines = 0;
+        for (const std::string& line : s.relaxed)
+            removalLines += line.rfind("removed ", 0) == 0;
+        EXPECT_EQ(removalLines, 1) << (named ? "named" : "unnamed");
+        EXPECT_TRUE(logSays(s, expected)) << expected;
+    }
+}
+
+// The log's line for a name is rewritten only while it is there as written: once a caller
+// has taken the lines away (an LOD level's log), the next removal starts a new line.
+TEST(SimplifyRelaxation, ARemovalAfterTheLinesWereTakenStartsANewLine)
+{
+    RemovalLog log;
+    std::vector<std::string> lines;
+    log.add(lines, "bolt", 12, 1.0, 0.0, 100.0);
+    log.add(lines, "bolt", 12, 2.0, 5.0, 100.0);
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_EQ(lines[0], "removed 2 pieces of bolt whole (24 faces in all, the largest 2 % of the diagonal, standing up "
+                        "to 5 % off the rest)");
+    lines = {"closed 1 tunnel"};
+    log.add(lines, "bolt", 8, 0.5, 0.0, 100.0);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[1], "removed bolt whole (8 faces, size 0.5 % of the diagonal)");
+}
+
 // Removing a part leaves a gap as wide as its size where it sat on the rest, but as wide as
 // its distance where it stands off it: a small part floating above a plate is dearer to
 // remove than the same part resting on it. Asked for a face count that one of them must go
