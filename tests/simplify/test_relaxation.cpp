@@ -46,6 +46,20 @@ SimplifyStats simplifyToFaces(const CadBuilder& b, int faces, TestMesh& input, T
     return simplify(m, p);
 }
 
+// A 100 × 100 plate (part 0) with 20 small plates (parts 1–20) floating in a row above it.
+CadBuilder plateWithSmallParts()
+{
+    CadBuilder b;
+    b.currentPart = 0;
+    stripPlate(b, 100, 100, 10, 4);
+    for (int i = 0; i < 20; ++i) {
+        b.currentPart = 1 + i;
+        const int first = stripPlate(b, 2, 2, 2, 1);
+        b.translate(first, 5 * i, 0, 10);
+    }
+    return b;
+}
+
 // Whether a line of the run's log of what gave way says `text`.
 bool logSays(const SimplifyStats& s, const std::string& text)
 {
@@ -106,14 +120,7 @@ TEST(SimplifyRelaxation, HardLocksWithoutRelaxationStopEarly)
 // removed whole, named in the log, until the target is met.
 TEST(SimplifyRelaxation, SmallestComponentsAreRemovedWholeAndLogged)
 {
-    CadBuilder b;
-    b.currentPart = 0;
-    stripPlate(b, 100, 100, 10, 4);
-    for (int i = 0; i < 20; ++i) {
-        b.currentPart = 1 + i;
-        const int first = stripPlate(b, 2, 2, 2, 1);
-        b.translate(first, 5 * i, 0, 10);
-    }
+    const CadBuilder b = plateWithSmallParts();
     TestMesh input, m;
     const SimplifyStats s = simplifyToFaces(b, 40, input, m);
     ASSERT_TRUE(s.ok) << s.message;
@@ -128,14 +135,7 @@ TEST(SimplifyRelaxation, SmallestComponentsAreRemovedWholeAndLogged)
 // for that name, with the count, not a line per copy; pieces without a part name share one.
 TEST(SimplifyRelaxation, RemovalsOfOneNameAreLoggedOnOneLine)
 {
-    CadBuilder b;
-    b.currentPart = 0;
-    stripPlate(b, 100, 100, 10, 4);
-    for (int i = 0; i < 20; ++i) {
-        b.currentPart = 1 + i;
-        const int first = stripPlate(b, 2, 2, 2, 1);
-        b.translate(first, 5 * i, 0, 10);
-    }
+    const CadBuilder b = plateWithSmallParts();
     for (const bool named : {true, false}) {
         TestMesh m;
         b.build(m, named);
