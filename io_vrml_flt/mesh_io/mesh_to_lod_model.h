@@ -2,9 +2,13 @@
 // parts with positions, normals and optionally texture coordinates), and the meshes of one
 // LOD set (layer_metadata.h's LodLevel records) become one flt::LodModel through
 // lod_assembly.h. Vertex normals are always written: OpenFlight geometry is only lit with
-// them; vertices whose normal is zero or not finite get the area-weighted face normal.
+// them. A vertex on a crease (crease_fans.h) is written once per smooth fan with the fan's
+// normal, so a box's edges stay sharp in a welded or simplified mesh; elsewhere a vertex
+// keeps its normal, and one whose normal is zero or not finite gets the area-weighted face
+// normal.
 #pragma once
 
+#include "crease_fans.h"
 #include "layer_metadata.h"
 #include "lod_assembly.h"
 #include "lod_model.h"
@@ -16,6 +20,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace cadlod::mesh_io {
@@ -120,7 +125,9 @@ flt::Level meshToLevel(Mesh& m, const LevelOptions& options, LevelStats& stats)
 {
     PartGrouping g = groupFaces(m, options);
     const std::vector<vcg::Point3f> fallback = fallbackNormals(m);
+    const CreaseFans fans(m);
     std::vector<std::vector<std::int64_t>> localIndex(g.parts.size());
+    std::vector<std::unordered_map<std::uint32_t, std::int64_t>> fanIndex(g.parts.size());
     for (std::size_t i = 0; i < m.face.size(); ++i) {
         const auto& f = m.face[i];
         if (f.IsD())
@@ -137,12 +144,19 @@ flt::Level meshToLevel(Mesh& m, const LevelOptions& options, LevelStats& stats)
         flt::Triangle tri;
         for (int k = 0; k < 3; ++k) {
             const std::size_t vi = vcg::tri::Index(m, f.cV(k));
-            if (index[vi] < 0) {
-                index[vi] = std::int64_t(part.positions.size());
+            // A vertex on a crease is written once per smooth fan, with the fan's normal;
+            // elsewhere once, with its own normal (the file's, or the mesh's).
+            const bool onCrease = fans.onCrease(vi);
+            const std::uint32_t fan = fans.fanOf(i, k);
+            std::int64_t& written = onCrease ? fanIndex[std::size_t(p)].try_emplace(fan, -1).first->second : index[vi];
+            if (written < 0) {
+                written = std::int64_t(part.positions.size());
                 const auto& v = m.vert[vi];
                 part.positions.push_back({double(v.cP()[0]), double(v.cP()[1]), double(v.cP()[2])});
                 const vcg::Point3f stored = vcg::Point3f::Construct(v.cN());
-                vcg::Point3f n = detail::usableNormal(stored) ? stored : fallback[vi];
+                vcg::Point3f n = onCrease && detail::usableNormal(fans.normal(fan)) ? fans.normal(fan)
+                                 : detail::usableNormal(stored)                    ? stored
+                                                                                   : fallback[vi];
                 if (n.Norm() > 0)
                     n.Normalize();
                 part.normals.push_back({n[0], n[1], n[2]});
@@ -151,7 +165,7 @@ flt::Level meshToLevel(Mesh& m, const LevelOptions& options, LevelStats& stats)
                 if (options.vertexColors)
                     part.vertexColors.push_back(detail::toRgba(v.cC()));
             }
-            tri[k] = std::uint32_t(index[vi]);
+            tri[k] = std::uint32_t(written);
         }
         part.triangles.push_back(tri);
         if (options.faceColors)

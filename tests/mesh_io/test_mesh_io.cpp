@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <vcg/complex/algorithms/update/normal.h>
+
+#include <cmath>
 #include <map>
 
 using namespace cadlod;
@@ -96,6 +99,68 @@ TEST(MeshIo, MeshBecomesALevelWithOneObjectPerPartAndUsableNormals)
             EXPECT_NEAR(n[2], 1.0f, 1e-6f);
     }
     EXPECT_EQ(stats.skippedFaces, 0u);
+}
+
+// A welded box (8 vertices, as the importer and the simplifier leave it) is written with one
+// vertex per corner of each side, lit by that side's normal: its edges stay sharp. Each
+// vertex's averaged normal would draw the box as a soft blob.
+TEST(MeshIo, AWeldedBoxIsWrittenWithSharpEdges)
+{
+    vrml::Scene scene;
+    vrml::Part box;
+    box.name = "BOX";
+    box.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    box.triangles = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                     1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+    scene.parts = {box};
+    CoreMesh m;
+    mesh_io::sceneToMesh(scene, m, {});
+    ASSERT_EQ(m.vn, 8);
+    vcg::tri::UpdateNormal<CoreMesh>::PerVertexNormalized(m);  // what a filter leaves: averaged corners
+    mesh_io::LevelStats stats;
+    const flt::Level level = mesh_io::meshToLevel(m, {"layer"}, stats);
+    ASSERT_EQ(level.parts.size(), 1u);
+    const flt::Part& p = level.parts[0];
+    ASSERT_EQ(p.triangles.size(), 12u);
+    EXPECT_EQ(p.positions.size(), 24u);  // four corners per side
+    for (const flt::Triangle& t : p.triangles) {
+        const auto at = [&](int k) {
+            const auto& q = p.positions[t[k]];
+            return vcg::Point3d(q[0], q[1], q[2]);
+        };
+        vcg::Point3d face = (at(1) - at(0)) ^ (at(2) - at(0));
+        face.Normalize();
+        for (int k = 0; k < 3; ++k) {
+            const flt::Vec3f& n = p.normals[t[k]];
+            EXPECT_NEAR(n[0] * face[0] + n[1] * face[1] + n[2] * face[2], 1.0, 1e-6) << "corner " << k;
+        }
+    }
+}
+
+// Faces meeting at less than the crease angle (an octagonal prism's sides, 45° apart, are
+// creases; a 24-sided one's, 15° apart, are not) share their vertices and normals.
+TEST(MeshIo, AShallowFoldSharesItsVertices)
+{
+    for (const int sides : {8, 24}) {
+        vrml::Scene scene;
+        vrml::Part prism;
+        prism.name = "PRISM";
+        for (int i = 0; i < sides; ++i) {
+            const double a = 2 * M_PI * i / sides;
+            prism.positions.push_back({float(std::cos(a)), float(std::sin(a)), 0.0f});
+            prism.positions.push_back({float(std::cos(a)), float(std::sin(a)), 3.0f});
+        }
+        for (int i = 0; i < sides; ++i) {  // the mantle only: an open tube
+            const std::uint32_t a = 2 * i, b = 2 * i + 1, c = 2 * ((i + 1) % sides), d = c + 1;
+            prism.triangles.insert(prism.triangles.end(), {a, c, d, a, d, b});
+        }
+        scene.parts = {prism};
+        CoreMesh m;
+        mesh_io::sceneToMesh(scene, m, {});
+        mesh_io::LevelStats stats;
+        const flt::Level level = mesh_io::meshToLevel(m, {"layer"}, stats);
+        EXPECT_EQ(level.parts[0].positions.size(), std::size_t(sides == 8 ? 4 * sides : 2 * sides)) << sides;
+    }
 }
 
 TEST(MeshIo, LevelBecomesAMeshAndBack)
