@@ -10,6 +10,7 @@
 #include "scene_to_mesh.h"
 #include "vrml/importer.h"
 
+#include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/update/topology.h>
 #include <wrap/io_trimesh/export_obj.h>
 #include <wrap/io_trimesh/export_ply.h>
@@ -91,7 +92,10 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
     return info;
 }
 
-LoadedMesh loadFlt(const std::string& path, CoreMesh& m)
+// An OpenFlight file writes a vertex once per smooth fan where faces fold (cadlod's own
+// exporter, mesh_io/crease_fans.h) or once per face (Face records): welded here, as the VRML
+// importer welds, so that the simplifier sees the surface whole and not cut along its creases.
+LoadedMesh loadFlt(const std::string& path, CoreMesh& m, const ImportSettings& settings)
 {
     const flt::LodModel model = readFlt(path);
     if (model.levels.empty())
@@ -103,6 +107,10 @@ LoadedMesh loadFlt(const std::string& path, CoreMesh& m)
     const flt::Level& finest = model.levels[flt::finestLevel(model)];
     info.parts = finest.parts.size();
     mesh_io::levelToMesh(finest, m);
+    if (settings.mergeVertices) {
+        info.mergedVertices = vcg::tri::Clean<CoreMesh>::RemoveDuplicateVertex(m);
+        vcg::tri::Clean<CoreMesh>::RemoveUnreferencedVertex(m);
+    }
     return info;
 }
 
@@ -186,7 +194,7 @@ LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& 
     LoadedMesh info;
     switch (formatOf(path)) {
     case InputFormat::Vrml: info = loadVrml(path, m, settings); break;
-    case InputFormat::OpenFlight: info = loadFlt(path, m); break;
+    case InputFormat::OpenFlight: info = loadFlt(path, m, settings); break;
     case InputFormat::Ply: info = loadWithVcg<vcg::tri::io::ImporterPLY<CoreMesh>>(
         path, m, InputFormat::Ply, [](int rc) { return vcg::tri::io::ImporterPLY<CoreMesh>::ErrorCritical(rc); }); break;
     case InputFormat::Obj: info = loadObj(path, m); break;

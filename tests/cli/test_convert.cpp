@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <fstream>
 
 namespace cadlod::test {
 namespace {
@@ -74,6 +75,30 @@ TEST(CliConvert, EveryLevelIsLitWithItsCreasesSharp)
         EXPECT_LT(double(offTheirFace), 0.01 * double(corners)) << "level " << k << ": " << offTheirFace << " of "
                                                                 << corners << " corners lit more than 45° off their face";
     }
+}
+
+// An OpenFlight file is welded on reading, as VRML is: a box written with a vertex per side
+// at its creases (24) reads back as one closed box of 8 vertices, not six loose squares.
+TEST(CliConvert, AnOpenFlightInputIsWelded)
+{
+    const std::string dir = freshDirectory("flt_weld");
+    {
+        std::ofstream wrl(dir + "/box.wrl");
+        wrl << "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [0 0 0, 1 0 0, 1 1 0, "
+               "0 1 0, 0 0 1, 1 0 1, 1 1 1, 0 1 1] } coordIndex [0 3 2 1 -1, 4 5 6 7 -1, 0 1 5 4 -1, "
+               "1 2 6 5 -1, 2 3 7 6 -1, 3 0 4 7 -1] } }\n";
+    }
+    const CliRun convert = runCadlod({"convert", dir + "/box.wrl", "-o", dir + "/box.flt"});
+    ASSERT_EQ(convert.exitCode, 0) << convert.stderrText;
+    const OsgProbe probe = probeWithOsg(dir + "/box.flt", "noUnitsConversion");
+    ASSERT_TRUE(probe.loaded);
+    ASSERT_FALSE(probe.lods.empty());
+    ASSERT_EQ(probe.lods.front().triangles.size(), 12u);  // the finest level: the box itself
+    const CliRun report = runCadlod({"report", dir + "/box.wrl", dir + "/box.flt", "--json"});
+    ASSERT_EQ(report.exitCode, 0) << report.stderrText;
+    const nlohmann::json r = nlohmann::json::parse(report.stdoutText);
+    EXPECT_EQ(r.at("facesAfter").get<int>(), 12);
+    EXPECT_EQ(r.at("verticesAfter").get<int>(), 8);
 }
 
 TEST(CliConvert, Vrml1FileConverts)
