@@ -110,6 +110,8 @@ LoadedMesh loadFlt(const std::string& path, CoreMesh& m, const ImportSettings& s
     if (settings.mergeVertices) {
         info.mergedVertices = vcg::tri::Clean<CoreMesh>::RemoveDuplicateVertex(m);
         vcg::tri::Clean<CoreMesh>::RemoveUnreferencedVertex(m);
+        if (settings.mergeTolerance > 0)  // as for VRML (scene_to_mesh.h)
+            info.mergedVertices += mesh_io::mergeCloseVertices(m, settings.mergeTolerance);
     }
     return info;
 }

@@ -87,7 +87,8 @@ public:
             const double cost = penalty * weight * distance * distance;
             const double priority = ctx.inFarField() ? ctx.farFieldPriority(distance) : ctx.priority(cost, weight, 1.0);
             heap.push_back(HeapElem(new ComponentRemoval(std::move(vertices), int(members.size()), size, distance,
-                                                         nameOf(components, members), ScalarType(priority))));
+                                                         nameOf(components, members),
+                                                         components[members.back()].named, ScalarType(priority))));
         }
     }
 
@@ -114,7 +115,7 @@ public:
         ctx.stats->removedComponents += pieces_;
         ctx.stats->largestRemovedComponent = std::max(ctx.stats->largestRemovedComponent, size_);
         ctx.recordError(distance_, distance_);
-        ctx.removals.add(ctx.stats->relaxed, name_, c.faces.size(), size_, distance_, ctx.diagonal);
+        ctx.removals.add(ctx.stats->relaxed, name_, named_, c.faces.size(), size_, distance_, ctx.diagonal);
     }
 
 private:
@@ -147,9 +148,9 @@ private:
     }
 
     ComponentRemoval(std::vector<VertexType*> vertices, int pieces, double size, double distance, std::string name,
-                     ScalarType priority)
+                     bool named, ScalarType priority)
         : vertices_(std::move(vertices)), pieces_(pieces), size_(size), distance_(distance), name_(std::move(name)),
-          priority_(priority)
+          named_(named), priority_(priority)
     {
     }
 
@@ -198,6 +199,7 @@ private:
     double size_;
     double distance_;  // removal distance: the size, or the gap it leaves if wider
     std::string name_;
+    bool named_;  // name_ is a CAD part's, not "component N"
     ScalarType priority_;
 };
 

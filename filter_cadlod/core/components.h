@@ -23,6 +23,7 @@ struct Component {
     std::vector<typename MeshType::FacePointer> faces;
     vcg::Box3d box;        // of its vertices
     std::string name;      // the CAD part most of its faces belong to, or "component N"
+    bool named = false;    // the name is a CAD part's (from the part table)
     double size() const { return box.IsNull() ? 0.0 : box.Diag(); }
 };
 
@@ -77,8 +78,10 @@ std::vector<Component<MeshType>> connectedComponents(MeshType& m)
         if (!partVotes.empty()) {
             const auto top = std::max_element(partVotes.begin(), partVotes.end(),
                                               [](const auto& a, const auto& b) { return a.second < b.second; });
-            if (top->first >= 0 && top->first < int(table.size()) && !table[std::size_t(top->first)].name.empty())
+            if (top->first >= 0 && top->first < int(table.size()) && !table[std::size_t(top->first)].name.empty()) {
                 c.name = table[std::size_t(top->first)].name;
+                c.named = true;
+            }
         }
         out.push_back(std::move(c));
     }

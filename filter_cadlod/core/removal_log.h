@@ -4,7 +4,7 @@
 // name (a forest of "Mesh" trees) or a part of thousands of loose pieces would otherwise
 // print a line per piece; each name gets one line instead, rewritten as its count grows:
 // how many, their faces in all, the largest, and the farthest any stood off the rest.
-// Pieces without a part name ("component N") share one line.
+// Pieces without a part name (logged as "component N") share one line.
 #pragma once
 
 #include <algorithm>
@@ -19,13 +19,14 @@ namespace cadlod {
 class RemovalLog
 {
 public:
-    // One removal of `name` (faces, size and distance off the rest in model units) into
-    // `lines`: its name's line is rewritten in place while it is still there as written
-    // (a caller may have taken the lines away since), else a new line is added.
-    void add(std::vector<std::string>& lines, const std::string& name, std::size_t faces, double size,
+    // One removal of `name` (`named`: a CAD part's name, not "component N"; faces, size and
+    // distance off the rest in model units) into `lines`: its name's line is rewritten in
+    // place while it is still there as written (a caller may have taken the lines away
+    // since), else a new line is added.
+    void add(std::vector<std::string>& lines, const std::string& name, bool named, std::size_t faces, double size,
              double standingOff, double diagonal)
     {
-        const bool unnamed = name.rfind("component ", 0) == 0;
+        const bool unnamed = !named;
         Tally& t = tallies_[unnamed ? std::string() : name];
         if (t.line >= lines.size() || lines[t.line] != t.text)
             t = Tally{lines.size(), std::string(), name};

@@ -101,6 +101,27 @@ TEST(CliConvert, AnOpenFlightInputIsWelded)
     EXPECT_EQ(r.at("verticesAfter").get<int>(), 8);
 }
 
+// --merge-tolerance merges close points of an OpenFlight input as it does a VRML input's: two
+// squares whose shared side is 1e-4 apart become one piece of 6 vertices.
+TEST(CliConvert, AnOpenFlightInputHonoursTheMergeTolerance)
+{
+    const std::string dir = freshDirectory("flt_merge");
+    {
+        std::ofstream wrl(dir + "/two.wrl");
+        wrl << "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [0 0 0, 1 0 0, 1 1 0, "
+               "0 1 0, 1.0001 0 0, 2 0 0, 2 1 0, 1.0001 1 0] } coordIndex [0 1 2 3 -1, 4 5 6 7 -1] } }\n";
+    }
+    const CliRun convert = runCadlod({"convert", dir + "/two.wrl", "-o", dir + "/two.flt", "--merge-tolerance", "0"});
+    ASSERT_EQ(convert.exitCode, 0) << convert.stderrText;
+    for (const std::string tolerance : {"0", "0.001"}) {
+        const CliRun report =
+            runCadlod({"report", dir + "/two.flt", dir + "/two.flt", "--json", "--merge-tolerance", tolerance});
+        ASSERT_EQ(report.exitCode, 0) << report.stderrText;
+        const nlohmann::json r = nlohmann::json::parse(report.stdoutText);
+        EXPECT_EQ(r.at("verticesBefore").get<int>(), tolerance == "0" ? 8 : 6) << tolerance;
+    }
+}
+
 TEST(CliConvert, Vrml1FileConverts)
 {
     const std::string dir = freshDirectory("vrml1");

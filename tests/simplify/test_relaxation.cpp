@@ -163,15 +163,30 @@ TEST(SimplifyRelaxation, ARemovalAfterTheLinesWereTakenStartsANewLine)
 {
     RemovalLog log;
     std::vector<std::string> lines;
-    log.add(lines, "bolt", 12, 1.0, 0.0, 100.0);
-    log.add(lines, "bolt", 12, 2.0, 5.0, 100.0);
+    log.add(lines, "bolt", true, 12, 1.0, 0.0, 100.0);
+    log.add(lines, "bolt", true, 12, 2.0, 5.0, 100.0);
     ASSERT_EQ(lines.size(), 1u);
     EXPECT_EQ(lines[0], "removed 2 pieces of bolt whole (24 faces in all, the largest 2 % of the diagonal, standing up "
                         "to 5 % off the rest)");
     lines = {"closed 1 tunnel"};
-    log.add(lines, "bolt", 8, 0.5, 0.0, 100.0);
+    log.add(lines, "bolt", true, 8, 0.5, 0.0, 100.0);
     ASSERT_EQ(lines.size(), 2u);
     EXPECT_EQ(lines[1], "removed bolt whole (8 faces, size 0.5 % of the diagonal)");
+}
+
+// Whether a piece is named comes from the part table, not from how its name reads: a CAD
+// part called "component 7" is logged by its name, and unnamed pieces share one line.
+TEST(SimplifyRelaxation, APartNamedLikeAnUnnamedPieceKeepsItsLine)
+{
+    RemovalLog log;
+    std::vector<std::string> lines;
+    log.add(lines, "component 7", true, 4, 1.0, 0.0, 100.0);
+    log.add(lines, "component 7", true, 4, 1.0, 0.0, 100.0);
+    log.add(lines, "component 1", false, 4, 1.0, 0.0, 100.0);
+    log.add(lines, "component 2", false, 4, 1.0, 0.0, 100.0);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[0].rfind("removed 2 pieces of component 7 whole", 0), 0u) << lines[0];
+    EXPECT_EQ(lines[1].rfind("removed 2 unnamed components whole", 0), 0u) << lines[1];
 }
 
 // Removing a part leaves a gap as wide as its size where it sat on the rest, but as wide as
