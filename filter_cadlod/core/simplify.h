@@ -12,6 +12,7 @@
 #include "non_manifold_split.h"
 #include "simplify_params.h"
 #include "tunnel_cut.h"
+#include "weight_trials.h"
 
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/selection.h>
@@ -423,13 +424,17 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
                                 " faces (the far field: under 5 % of the input)");
 }
 
+template <class MeshType>
+SimplifyStats simplifyWith(MeshType& m, const SimplifyParams& params, SimplifyStats stats,
+                           std::chrono::steady_clock::time_point start, vcg::CallBackPos* progress,
+                           const RunTogether& together);
+
 // Simplifies `m` in place. `progress` may be null. `together` runs the two halves of a large
 // mesh (collapse_halves.h) at once, or one after the other (the result is the same).
 template <class MeshType>
 SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackPos* progress = nullptr,
                        const RunTogether& together = runInSequence)
 {
-    using VertexType = typename MeshType::VertexType;
     const auto start = std::chrono::steady_clock::now();
 
     SimplifyStats stats;
@@ -453,6 +458,26 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
         return stats;
     }
 
+    SimplifyParams chosen = params;
+    if (weightTrialsApply(m, params)) {
+        const std::vector<WeightTrial> trials = runWeightTrials(
+            m, params, [&](CoreMesh& copy, const SimplifyParams& p) { return simplify(copy, p, nullptr, together); },
+            progress);
+        const std::size_t best = closestTrial(trials);
+        if (best < trials.size())
+            chosen.largeFaceWeight = trials[best].weight;
+        stats.weightTrials = detail::describeTrials(trials, best, liveDiagonal(m));
+    }
+    return simplifyWith(m, chosen, stats, start, progress, together);
+}
+
+// simplify() once the plane weight is chosen.
+template <class MeshType>
+SimplifyStats simplifyWith(MeshType& m, const SimplifyParams& params, SimplifyStats stats,
+                           std::chrono::steady_clock::time_point start, vcg::CallBackPos* progress,
+                           const RunTogether& together)
+{
+    using VertexType = typename MeshType::VertexType;
     // An edge of three faces or more would hold its vertices for good (feature_edges.h), and
     // a target would be reached by removing whole parts instead: it is cut apart first.
     cutNonManifoldEdges(m, params, stats);

@@ -92,6 +92,11 @@ struct SimplifyParams {
     // (collapse_halves.h), on two cores when the caller gives a RunTogether that runs tasks
     // at once; 0: never. Below it a session takes about a second or less.
     int halvesMinFaces = 200000;
+    // A mesh with a face target and fewer faces than this is first simplified on copies with
+    // a few plane weights (largeFaceWeight and multiples of it, weight_trials.h), and the
+    // weight whose result is closest to the input is used; 0: never. Above it the trials
+    // would cost more than a second each.
+    int weightTrialsMaxFaces = 200000;
 };
 
 struct SimplifyStats {
@@ -128,6 +133,7 @@ struct SimplifyStats {
     double widestTunnelCap = 0.0;  // the largest cap inradius, model units
     double errorBound = 0.0;       // the maximum collapse error in force, model units (0: none)
     std::vector<std::string> relaxed;  // one line per relaxation step, for the log
+    std::string weightTrials;      // the plane-weight trials and the weight kept (empty: none ran)
     std::string stoppedBy;         // which criterion ended the run: "face target", "max error", ...
 
     double largestErrorFraction() const { return diagonal > 0 ? largestError / diagonal : 0.0; }

@@ -72,6 +72,17 @@ struct CadBuilder {
     }
 };
 
+// The part `make` builds, twice with its parts: an input to measure against and a mesh to
+// simplify.
+template <class MeshType, class Make>
+void buildInputAndCopy(const Make& make, MeshType& input, MeshType& m)
+{
+    CadBuilder b;
+    make(b);
+    b.build(input, true);
+    b.build(m, true);
+}
+
 struct ProfilePoint {
     double z, r;
 };

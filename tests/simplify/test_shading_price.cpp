@@ -22,14 +22,12 @@ namespace {
 // The share of pixels a viewer sees differ from the input after a reduction by `percent`.
 double visibleAfter(const std::function<void(CadBuilder&)>& make, double percent, double shadingWeight, int* faces)
 {
-    CadBuilder b;
-    make(b);
     TestMesh input, m;
-    b.build(input, true);
-    b.build(m, true);
+    buildInputAndCopy(make, input, m);
     SimplifyParams p;
     p.reductionPerc = percent;
     p.shadingWeight = shadingWeight;
+    p.weightTrialsMaxFaces = 0;  // the price alone, at one plane weight (weight_trials.h)
     const SimplifyStats s = simplify(m, p);
     EXPECT_TRUE(s.ok) << s.message;
     *faces = m.fn;

@@ -1,0 +1,167 @@
+// Plane-weight trials: how much a large face's plane weighs in the quadrics
+// (SimplifyParams::largeFaceWeight) decides what a far reduction gives up. Light, and a
+// small part keeps its tabs and bumps while a long cylinder is merged into a few facets;
+// heavy, and the cylinder stays round while the small details go. Which is closer to the
+// input depends on the part, so a mesh small enough to simplify in about a second is
+// simplified once per weight on a copy, each result is measured against the input
+// (symmetric Hausdorff distance, sliver share), and the weight of the closest is used.
+// simplify() then runs with that weight on the mesh itself; the trials never touch it.
+#pragma once
+
+#include "compactness.h"
+#include "hausdorff.h"
+#include "layer_metadata.h"
+#include "simplify_params.h"
+
+#include "core_mesh.h"
+
+#include <vcg/complex/algorithms/update/topology.h>
+#include <vcg/complex/append.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace cadlod {
+
+// The weights tried, as multiples of the caller's largeFaceWeight: the caller's own first.
+inline constexpr double kTrialWeightFactors[] = {1.0, 10.0, 40.0};
+// A sliver share this much above the lowest of the trials counts against a trial, at one
+// Hausdorff "best" per kTrialSliverStep beyond it: slivers are what the weight trades for
+// accuracy, and a trial that halves neither is no better.
+inline constexpr double kTrialSliverMargin = 0.01;
+inline constexpr double kTrialSliverStep = 0.05;
+// Seeds of the trials' surface samples (the bench and the report use others), and the
+// fewest samples per side: the largest distance of a coarse result is a spot a few
+// thousand samples miss (a 384-face tube at 90 % measured 3.1 % of the diagonal with 384
+// samples and 4.2 % with 50 000, where another weight gave 3.2 % with both).
+inline constexpr unsigned kTrialSeedForward = 101, kTrialSeedBackward = 102;
+inline constexpr std::size_t kTrialMinSamples = 100000;
+
+struct WeightTrial {
+    double weight = 0.0;
+    double hausdorff = 0.0;  // symmetric maximum, model units
+    double slivers = 0.0;    // share of faces with compactness < 0.1
+    bool reached = false;    // the trial reached its face target
+};
+
+// Whether simplify() runs trials for this mesh and these parameters: a face target, a
+// plane weight to vary, the whole mesh to work on, and a mesh below the size limit.
+template <class MeshType>
+bool weightTrialsApply(const MeshType& m, const SimplifyParams& p)
+{
+    const bool faceTarget = p.targetFaces > 0 || p.reductionPerc > 0;
+    return faceTarget && p.weightTrialsMaxFaces > 0 && m.fn < p.weightTrialsMaxFaces && p.largeFaceWeight > 0 &&
+           !p.selectedOnly;
+}
+
+// The closest trial: the lowest Hausdorff distance, a trial's excess slivers counted
+// against it (see kTrialSliverStep). Trials that stopped above their target are taken only
+// when none reached it.
+inline std::size_t closestTrial(const std::vector<WeightTrial>& trials)
+{
+    const bool anyReached = std::any_of(trials.begin(), trials.end(), [](const WeightTrial& t) { return t.reached; });
+    double leastDistance = std::numeric_limits<double>::max(), leastSlivers = 1.0;
+    for (const WeightTrial& t : trials)
+        if (t.reached || !anyReached) {
+            leastDistance = std::min(leastDistance, t.hausdorff);
+            leastSlivers = std::min(leastSlivers, t.slivers);
+        }
+    auto score = [&](const WeightTrial& t) {
+        const double distance = leastDistance > 0 ? t.hausdorff / leastDistance : (t.hausdorff > 0 ? 2.0 : 1.0);
+        return distance + std::max(0.0, t.slivers - leastSlivers - kTrialSliverMargin) / kTrialSliverStep;
+    };
+    std::size_t best = trials.size();
+    for (std::size_t i = 0; i < trials.size(); ++i)
+        if ((trials[i].reached || !anyReached) && (best == trials.size() || score(trials[i]) < score(trials[best])))
+            best = i;
+    return best;
+}
+
+namespace detail {
+
+// What the simplifier reads of `from`, as a CoreMesh: points, faces, face colours (white
+// where it has none: its colour borders are features), part ids and the part table.
+template <class MeshType>
+void copyForTrial(CoreMesh& to, MeshType& from)
+{
+    to.Clear();
+    const bool parts = vcg::tri::HasPerFaceAttribute(from, kPartAttribute);
+    const bool colors = vcg::tri::HasPerFaceColor(from);
+    auto vi = vcg::tri::Allocator<CoreMesh>::AddVertices(to, from.vn);
+    std::vector<int> index(from.vert.size(), -1);
+    for (std::size_t i = 0; i < from.vert.size(); ++i)
+        if (!from.vert[i].IsD()) {
+            index[i] = int(vi - to.vert.begin());
+            vi->P() = vcg::Point3f::Construct(from.vert[i].cP());
+            ++vi;
+        }
+    auto partOf = parts ? facePartHandle(from) : typename MeshType::template PerFaceAttributeHandle<int>();
+    auto trialPartOf = parts ? facePartHandle(to) : CoreMesh::PerFaceAttributeHandle<int>();
+    if (hasParts(from))
+        partTableHandle(to)() = partTableHandle(from)();
+    auto fi = vcg::tri::Allocator<CoreMesh>::AddFaces(to, from.fn);
+    for (auto& f : from.face) {
+        if (f.IsD())
+            continue;
+        for (int k = 0; k < 3; ++k)
+            fi->V(k) = &to.vert[std::size_t(index[std::size_t(vcg::tri::Index(from, f.cV(k)))])];
+        fi->C() = colors ? f.cC() : vcg::Color4b(vcg::Color4b::White);
+        if (parts)
+            trialPartOf[*fi] = partOf[f];
+        ++fi;
+    }
+    vcg::tri::UpdateTopology<CoreMesh>::VertexFace(to);
+}
+
+inline std::string describeTrials(const std::vector<WeightTrial>& trials, std::size_t chosen, double diagonal)
+{
+    std::string line = "plane weights tried (Hausdorff % of the diagonal, slivers %):";
+    char item[128];
+    for (std::size_t i = 0; i < trials.size(); ++i) {
+        std::snprintf(item, sizeof item, "%s %.4g (%.4f, %.1f%s)", i ? ";" : "", trials[i].weight,
+                      diagonal > 0 ? 100 * trials[i].hausdorff / diagonal : 0.0, 100 * trials[i].slivers,
+                      trials[i].reached ? "" : ", short of the target");
+        line += item;
+    }
+    std::snprintf(item, sizeof item, "; kept %.4g", chosen < trials.size() ? trials[chosen].weight : 0.0);
+    return line + item;
+}
+
+}  // namespace detail
+
+// Simplifies copies of `m` once per weight with `simplifyCopy(copy, params)` and returns
+// the trials, measured against `m` (unchanged). `progress` (may be null) is told of each.
+template <class MeshType, class SimplifyCopy>
+std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& params, const SimplifyCopy& simplifyCopy,
+                                         vcg::CallBackPos* progress)
+{
+    CoreMesh input;
+    detail::copyForTrial(input, m);
+    detail::ClosestFace<CoreMesh> toInput(input);
+    const std::size_t samples = std::max(std::size_t(input.fn), kTrialMinSamples);
+    std::vector<WeightTrial> trials;
+    const int count = int(std::size(kTrialWeightFactors));
+    for (int k = 0; k < count; ++k) {
+        WeightTrial t;
+        t.weight = params.largeFaceWeight * kTrialWeightFactors[k];
+        if (progress)
+            progress(100 * k / (count + 1), ("Trying plane weight " + std::to_string(t.weight)).c_str());
+        CoreMesh trial;
+        detail::copyForTrial(trial, m);
+        SimplifyParams p = params;
+        p.largeFaceWeight = t.weight;
+        p.weightTrialsMaxFaces = 0;
+        const SimplifyStats s = simplifyCopy(trial, p);
+        t.reached = s.ok && trial.fn <= s.targetFaces;
+        const double forward = oneSidedHausdorff(input, trial, samples, kTrialSeedForward).max;
+        const double backward = oneSidedHausdorff(trial, toInput, samples, kTrialSeedBackward).max;
+        t.hausdorff = std::max(forward, backward);
+        t.slivers = meshCompactness(trial).shareBelow01;
+        trials.push_back(t);
+    }
+    return trials;
+}
+
+}  // namespace cadlod
