@@ -43,6 +43,9 @@ void addProtectionOptions(CLI::App& app, ProtectionArgs& a)
     app.add_flag("--no-relax", a.noRelax, "Stop early rather than cut non-manifold edges apart, relax the shape guards or remove components");
     app.add_flag("--keep-tunnels", a.keepTunnels,
                  "Never cut and cap a tunnel (a through-hole) whose rim has shrunk to three edges");
+    app.add_flag("--no-weight-trials", a.noWeightTrials,
+                 "Simplify with the default plane weight only; by default a mesh under 200 000 faces is first "
+                 "simplified with three plane weights and the one nearest the input is used");
 }
 
 void addExportOptions(CLI::App& app, ExportArgs& a)
@@ -101,6 +104,8 @@ void applyProtection(const ProtectionArgs& a, SimplifyParams& p)
     p.preserveBoundary = !a.noBoundary;
     p.relaxToReachTarget = !a.noRelax;
     p.closeTunnels = !a.keepTunnels;
+    if (a.noWeightTrials)
+        p.weightTrialsMaxFaces = 0;
 }
 
 SaveSettings saveSettings(const ExportArgs& a)
@@ -133,7 +138,7 @@ nlohmann::json toJson(const ProtectionArgs& a)
             {"shadingWeight", a.shadingWeight},
             {"keepPartBorders", a.partBorders}, {"keepColourBorders", !a.noColorBorders},
             {"preserveBoundary", !a.noBoundary}, {"relaxToReachTarget", !a.noRelax},
-            {"closeTunnels", !a.keepTunnels}};
+            {"closeTunnels", !a.keepTunnels}, {"weightTrials", !a.noWeightTrials}};
 }
 
 nlohmann::json toJson(const ExportArgs& a)

@@ -27,6 +27,7 @@ struct ProtectionArgs {  // defaults: the simplifier's own
     bool noBoundary = false;
     bool noRelax = false;
     bool keepTunnels = false;
+    bool noWeightTrials = false;
 };
 
 struct ExportArgs {

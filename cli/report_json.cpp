@@ -45,6 +45,7 @@ nlohmann::json simplifyStatsJson(const SimplifyStats& s)
             {"closedTunnels", s.closedTunnels},
             {"widestTunnelCap", s.widestTunnelCap},
             {"relaxed", s.relaxed},
+            {"weightTrials", s.weightTrials},
             {"message", s.message}};
 }
 

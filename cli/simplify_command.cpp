@@ -72,6 +72,8 @@ void runSimplify(const SimplifyArgs& a)
         std::fprintf(stderr, "cadlod: %d of %d collapses made on two halves side by side (a band of %d vertices "
                              "between them left to the end)\n",
                      stats.halvesCollapses, stats.collapses, stats.halvesBandVertices);
+    if (!a.common.quiet && !stats.weightTrials.empty())
+        std::fprintf(stderr, "cadlod: %s\n", stats.weightTrials.c_str());
     if (!a.common.quiet)
         for (const std::string& line : stats.relaxed)  // what gave way to reach the target
             std::fprintf(stderr, "cadlod: %s\n", line.c_str());

@@ -94,6 +94,8 @@ void logLevels(MeshFilterInterface& plugin, const LodSetResult& r, const ViewPar
                    r.modelSize > 0 ? 100.0 * l.hausdorffMax / r.modelSize : 0.0, pixelsAtSwitchIn(l, view),
                    qUtf8Printable(distanceText(l.switchOut)), qUtf8Printable(distanceText(l.switchIn)), c.mean,
                    100.0 * c.shareBelow01);
+        if (k > 0 && !r.steps[k - 1].weightTrials.empty())
+            plugin.Log("LOD%d: %s", l.level, r.steps[k - 1].weightTrials.c_str());
         if (k > 0)
             for (const std::string& step : r.steps[k - 1].relaxed)
                 plugin.Log("LOD%d: %s", l.level, step.c_str());

@@ -70,6 +70,8 @@ bool cadSimplify(MeshFilterInterface& plugin, MeshModel& m, const RichParameterL
     }
     if (!s.message.empty())
         plugin.Log("CAD Quadric Edge Collapse on %s: %s", qUtf8Printable(m.label()), s.message.c_str());
+    if (!s.weightTrials.empty())
+        plugin.Log("CAD Quadric Edge Collapse on %s: %s", qUtf8Printable(m.label()), s.weightTrials.c_str());
     for (const std::string& step : s.relaxed)
         plugin.Log("CAD Quadric Edge Collapse on %s: relaxed: %s", qUtf8Printable(m.label()), step.c_str());
     if (par.getBool("autoClean"))

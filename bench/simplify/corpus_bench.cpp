@@ -136,6 +136,8 @@ void printSimplifyLog(const std::string& what, const cadlod::SimplifyStats& s)
                  what.c_str(), s.facesBefore, s.facesAfter, s.targetFaces, s.stoppedBy.c_str(), s.featureBreaks,
                  s.removedComponents, 100 * s.largestErrorFraction(), s.rejectedFeature, s.rejectedFlip,
                  s.rejectedTopology, s.rejectedCompactness);
+    if (!s.weightTrials.empty())
+        std::fprintf(stderr, "  %s\n", s.weightTrials.c_str());
     for (const std::string& line : s.relaxed)
         std::fprintf(stderr, "  %s\n", line.c_str());
 }
