@@ -16,10 +16,11 @@
 #include "core_mesh.h"
 
 #include <vcg/complex/algorithms/update/topology.h>
-#include <vcg/complex/append.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,9 +28,9 @@ namespace cadlod {
 
 // The weights tried, as multiples of the caller's largeFaceWeight: the caller's own first.
 inline constexpr double kTrialWeightFactors[] = {1.0, 10.0, 40.0};
-// A sliver share this much above the lowest of the trials counts against a trial, at one
-// Hausdorff "best" per kTrialSliverStep beyond it: slivers are what the weight trades for
-// accuracy, and a trial that halves neither is no better.
+// A sliver share more than this above the lowest of the trials counts against a trial, as
+// one more "best distance" per kTrialSliverStep beyond it: a heavier weight may buy its
+// distance with slivers, and that is not closer to the input.
 inline constexpr double kTrialSliverMargin = 0.01;
 inline constexpr double kTrialSliverStep = 0.05;
 // Seeds of the trials' surface samples (the bench and the report use others), and the
