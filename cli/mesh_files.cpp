@@ -93,7 +93,7 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
 }
 
 // An OpenFlight file writes a vertex once per smooth fan where faces fold (cadlod's own
-// exporter, mesh_io/crease_fans.h) or once per face (Face records): welded here, as the VRML
+// exporter, metadata/crease_fans.h) or once per face (Face records): welded here, as the VRML
 // importer welds, so that the simplifier sees the surface whole and not cut along its creases.
 LoadedMesh loadFlt(const std::string& path, CoreMesh& m, const ImportSettings& settings)
 {

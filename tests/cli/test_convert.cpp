@@ -47,7 +47,7 @@ TEST(CliConvert, DemoAssemblyInMillimetresGivesAnOsgReadableChain)
 }
 
 // Every level keeps its sharp edges as OpenSceneGraph lights them: a vertex where faces fold
-// past 30° is written once per smooth fan (mesh_io/crease_fans.h). One averaged normal per
+// past 30° is written once per smooth fan (metadata/crease_fans.h). One averaged normal per
 // welded vertex drew the demo's boxes as soft blobs, their corners' normals 55° off each side.
 TEST(CliConvert, EveryLevelIsLitWithItsCreasesSharp)
 {

@@ -8,7 +8,9 @@
 // a manifold edge are in one fan when their normals differ by at most the crease angle; the
 // fan's normal is the area-weighted sum of its faces' normals. Welded meshes (the importer
 // welds coincident points, and the simplifier keeps them welded) need this at export: the
-// OpenFlight writer gives a vertex with several fans one vertex record per fan.
+// OpenFlight writer gives a vertex with several fans one vertex record per fan, and the
+// simplifier's plane-weight trials (core/shading_deviation.h) compare a result's shading
+// with its input's through them.
 #pragma once
 
 #include <vcg/complex/complex.h>
@@ -19,7 +21,7 @@
 #include <numeric>
 #include <vector>
 
-namespace cadlod::mesh_io {
+namespace cadlod {
 
 class CreaseFans
 {
@@ -159,4 +161,4 @@ private:
     std::vector<std::uint8_t> fans_;     // per vertex: 0, 1 or 2 (two or more)
 };
 
-}  // namespace cadlod::mesh_io
+}  // namespace cadlod
