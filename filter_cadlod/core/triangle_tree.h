@@ -201,33 +201,47 @@ public:
         return found;
     }
 
-    // Squared distance from p to the triangle (Ericson, Real-Time Collision Detection, 5.1.5).
+    // Squared distance from p to the triangle.
     static double triangleDistance2(const Triangle& t, const vcg::Point3d& p)
+    {
+        const vcg::Point3d w = closestWeights(t, p);
+        return (t[0] * w[0] + t[1] * w[1] + t[2] * w[2] - p).SquaredNorm();
+    }
+
+    // The barycentric weights of the triangle's point closest to p (Ericson, Real-Time
+    // Collision Detection, 5.1.5: the corner, edge or face region p projects into).
+    static vcg::Point3d closestWeights(const Triangle& t, const vcg::Point3d& p)
     {
         const vcg::Point3d &a = t[0], &b = t[1], &c = t[2];
         const vcg::Point3d ab = b - a, ac = c - a, ap = p - a;
         const double d1 = ab * ap, d2 = ac * ap;
         if (d1 <= 0 && d2 <= 0)
-            return ap.SquaredNorm();
+            return {1, 0, 0};
         const vcg::Point3d bp = p - b;
         const double d3 = ab * bp, d4 = ac * bp;
         if (d3 >= 0 && d4 <= d3)
-            return bp.SquaredNorm();
+            return {0, 1, 0};
         const double vc = d1 * d4 - d3 * d2;
-        if (vc <= 0 && d1 >= 0 && d3 <= 0)
-            return (ap - ab * (d1 / (d1 - d3))).SquaredNorm();
+        if (vc <= 0 && d1 >= 0 && d3 <= 0) {
+            const double s = d1 / (d1 - d3);
+            return {1 - s, s, 0};
+        }
         const vcg::Point3d cp = p - c;
         const double d5 = ab * cp, d6 = ac * cp;
         if (d6 >= 0 && d5 <= d6)
-            return cp.SquaredNorm();
+            return {0, 0, 1};
         const double vb = d5 * d2 - d1 * d6;
-        if (vb <= 0 && d2 >= 0 && d6 <= 0)
-            return (ap - ac * (d2 / (d2 - d6))).SquaredNorm();
+        if (vb <= 0 && d2 >= 0 && d6 <= 0) {
+            const double s = d2 / (d2 - d6);
+            return {1 - s, 0, s};
+        }
         const double va = d3 * d6 - d5 * d4;
-        if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-            return (bp - (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))).SquaredNorm();
+        if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+            const double s = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+            return {0, 1 - s, s};
+        }
         const double denom = 1.0 / (va + vb + vc);
-        return (ap - ab * (vb * denom) - ac * (vc * denom)).SquaredNorm();
+        return {1 - (vb + vc) * denom, vb * denom, vc * denom};
     }
 
 private:
