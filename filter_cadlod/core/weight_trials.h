@@ -4,13 +4,15 @@
 // heavy, and the cylinder stays round while the small details go. Which is closer to the
 // input depends on the part, so a mesh small enough to simplify in about a second is
 // simplified once per weight on a copy, each result is measured against the input
-// (symmetric Hausdorff distance, sliver share), and the weight of the closest is used.
+// (symmetric Hausdorff distance, the share a viewer sees lit differently, sliver share),
+// and the weight of the closest is used.
 // simplify() then runs with that weight on the mesh itself; the trials never touch it.
 #pragma once
 
 #include "compactness.h"
 #include "hausdorff.h"
 #include "layer_metadata.h"
+#include "shading_deviation.h"
 #include "simplify_params.h"
 
 #include "core_mesh.h"
@@ -33,17 +35,27 @@ inline constexpr double kTrialWeightFactors[] = {1.0, 10.0, 40.0};
 // distance with slivers, and that is not closer to the input.
 inline constexpr double kTrialSliverMargin = 0.01;
 inline constexpr double kTrialSliverStep = 0.05;
+// A trial's shading deviation (shading_deviation.h) over the lowest of the trials counts
+// this much against it, beside its distance over the lowest; below kTrialShadingFloor of the
+// surfaces, shading differences count as that floor (too few to tell trials apart). Chosen
+// on the tuning corpus (docs/benchmarks.md, "Shading in the trials").
+inline constexpr double kTrialShadingWeight = 0.7;
+inline constexpr double kTrialShadingFloor = 0.005;
 // Seeds of the trials' surface samples (the bench and the report use others), and the
 // fewest samples per side: the largest distance of a coarse result is a spot a few
 // thousand samples miss (a 384-face tube at 90 % measured 3.1 % of the diagonal with 384
 // samples and 4.2 % with 50 000, where another weight gave 3.2 % with both).
 inline constexpr unsigned kTrialSeedForward = 101, kTrialSeedBackward = 102;
 inline constexpr std::size_t kTrialMinSamples = 100000;
+// Points per side the shading deviation is measured with, and their seed.
+inline constexpr std::size_t kTrialShadingSamples = 50000;
+inline constexpr unsigned kTrialShadingSeed = 103;
 
 struct WeightTrial {
     double weight = 0.0;
     double hausdorff = 0.0;  // symmetric maximum, model units
     double slivers = 0.0;    // share of faces with compactness < 0.1
+    double shading = 0.0;    // share of the surfaces lit visibly differently (shading_deviation.h)
     bool reached = false;    // the trial reached its face target
 };
 
@@ -57,21 +69,26 @@ bool weightTrialsApply(const MeshType& m, const SimplifyParams& p)
            !p.selectedOnly;
 }
 
-// The closest trial: the lowest Hausdorff distance, a trial's excess slivers counted
-// against it (see kTrialSliverStep). Trials that stopped above their target are taken only
-// when none reached it.
+// The closest trial: the lowest sum of its Hausdorff distance over the least of the trials
+// and its shading deviation over the least (kTrialShadingWeight), a trial's excess slivers
+// counted against it (kTrialSliverStep). Trials that stopped above their target are taken
+// only when none reached it.
 inline std::size_t closestTrial(const std::vector<WeightTrial>& trials)
 {
     const bool anyReached = std::any_of(trials.begin(), trials.end(), [](const WeightTrial& t) { return t.reached; });
-    double leastDistance = std::numeric_limits<double>::max(), leastSlivers = 1.0;
+    double leastDistance = std::numeric_limits<double>::max(), leastSlivers = 1.0, leastShading = 1.0;
     for (const WeightTrial& t : trials)
         if (t.reached || !anyReached) {
             leastDistance = std::min(leastDistance, t.hausdorff);
             leastSlivers = std::min(leastSlivers, t.slivers);
+            leastShading = std::min(leastShading, t.shading);
         }
     auto score = [&](const WeightTrial& t) {
         const double distance = leastDistance > 0 ? t.hausdorff / leastDistance : (t.hausdorff > 0 ? 2.0 : 1.0);
-        return distance + std::max(0.0, t.slivers - leastSlivers - kTrialSliverMargin) / kTrialSliverStep;
+        const double shading =
+            std::max(t.shading, kTrialShadingFloor) / std::max(leastShading, kTrialShadingFloor);
+        return distance + kTrialShadingWeight * shading +
+               std::max(0.0, t.slivers - leastSlivers - kTrialSliverMargin) / kTrialSliverStep;
     };
     std::size_t best = trials.size();
     for (std::size_t i = 0; i < trials.size(); ++i)
@@ -118,11 +135,12 @@ void copyForTrial(CoreMesh& to, MeshType& from)
 
 inline std::string describeTrials(const std::vector<WeightTrial>& trials, std::size_t chosen, double diagonal)
 {
-    std::string line = "plane weights tried (Hausdorff % of the diagonal, slivers %):";
+    std::string line = "plane weights tried (Hausdorff % of the diagonal, shading %, slivers %):";
     char item[128];
     for (std::size_t i = 0; i < trials.size(); ++i) {
-        std::snprintf(item, sizeof item, "%s %.4g (%.4f, %.1f%s)", i ? ";" : "", trials[i].weight,
-                      diagonal > 0 ? 100 * trials[i].hausdorff / diagonal : 0.0, 100 * trials[i].slivers,
+        std::snprintf(item, sizeof item, "%s %.4g (%.4f, %.2f, %.1f%s)", i ? ";" : "", trials[i].weight,
+                      diagonal > 0 ? 100 * trials[i].hausdorff / diagonal : 0.0, 100 * trials[i].shading,
+                      100 * trials[i].slivers,
                       trials[i].reached ? "" : ", short of the target");
         line += item;
     }
@@ -160,6 +178,7 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
         const double backward = oneSidedHausdorff(trial, toInput, samples, kTrialSeedBackward).max;
         t.hausdorff = std::max(forward, backward);
         t.slivers = meshCompactness(trial).shareBelow01;
+        t.shading = shadingDeviation(input, toInput, trial, kTrialShadingSamples, kTrialShadingSeed).share();
         trials.push_back(t);
     }
     return trials;

@@ -92,7 +92,9 @@ TEST(WeightTrials, NeverFartherThanTheDefaultWeight)
 // slivers (over the fewest plus one point) count one best distance per five points.
 TEST(WeightTrials, TheClosestTrialWinsUnlessItMakesSlivers)
 {
-    std::vector<WeightTrial> t = {{0.005, 3.0, 0.02, true}, {0.05, 2.0, 0.02, true}, {0.2, 4.0, 0.02, true}};
+    // weight, distance, slivers, shading deviation, reached
+    std::vector<WeightTrial> t = {
+        {0.005, 3.0, 0.02, 0.0, true}, {0.05, 2.0, 0.02, 0.0, true}, {0.2, 4.0, 0.02, 0.0, true}};
     EXPECT_EQ(closestTrial(t), 1u);
     t[1].slivers = 0.12;  // 10 points more: 1 + 1.8 against 1.5
     EXPECT_EQ(closestTrial(t), 0u);
@@ -104,6 +106,19 @@ TEST(WeightTrials, TheClosestTrialWinsUnlessItMakesSlivers)
         x.reached = false;
     EXPECT_EQ(closestTrial(t), 1u);
     EXPECT_EQ(closestTrial({}), 0u);
+}
+
+// Shading counts beside distance: a trial a little farther that a viewer sees lit like the
+// input over far more of its surface wins; below the floor, shading cannot tell trials apart.
+TEST(WeightTrials, ShadingCountsBesideDistance)
+{
+    std::vector<WeightTrial> t = {{0.005, 2.2, 0.02, 0.06, true}, {0.05, 2.0, 0.02, 0.12, true}};
+    EXPECT_EQ(closestTrial(t), 0u);  // 1.1 + 0.7 against 1 + 1.4
+    t[0].shading = 0.11;             // 1.1 + 0.7 against 1 + 0.7 · 1.09
+    EXPECT_EQ(closestTrial(t), 1u);
+    t[0].shading = 0.001;  // both under the floor of 0.5 %: distance decides
+    t[1].shading = 0.004;
+    EXPECT_EQ(closestTrial(t), 1u);
 }
 
 // Trials run only with a face target, a weight to vary, the whole mesh to work on and a mesh
