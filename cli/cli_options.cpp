@@ -45,7 +45,7 @@ void addProtectionOptions(CLI::App& app, ProtectionArgs& a)
                  "Never cut and cap a tunnel (a through-hole) whose rim has shrunk to three edges");
     app.add_flag("--no-weight-trials", a.noWeightTrials,
                  "Simplify with the default plane weight only; by default a mesh under 200 000 faces is first "
-                 "simplified with three plane weights and the one nearest the input is used");
+                 "simplified with three plane weights and the one nearest the input (distance and shading) is used");
 }
 
 void addExportOptions(CLI::App& app, ExportArgs& a)
