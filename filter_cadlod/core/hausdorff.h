@@ -260,6 +260,47 @@ std::vector<Sample> groupedByFace(const std::vector<Sample>& picks, std::size_t 
     return grouped;
 }
 
+// A point on one of a list of faces: its index in the list, the weights (u, v) of the
+// face's corners 1 and 2, and its place along the face (groupedByFace).
+struct SurfacePick {
+    std::size_t face = 0;
+    double u = 0, v = 0;
+    std::uint32_t order = 0;
+};
+
+// `count` area-uniform points on `faces`, face by face and along each face in order
+// (neighbouring lookups in a row are fast); a fixed seed gives the same points.
+template <class FacePointer>
+std::vector<SurfacePick> areaUniformPicks(const std::vector<FacePointer>& faces, std::size_t count, unsigned seed)
+{
+    std::vector<double> cumulativeArea;
+    cumulativeArea.reserve(faces.size());
+    double total = 0.0;
+    for (const auto* f : faces) {
+        const vcg::Point3d a = vcg::Point3d::Construct(f->cP(0));
+        total += 0.5 * ((vcg::Point3d::Construct(f->cP(1)) - a) ^ (vcg::Point3d::Construct(f->cP(2)) - a)).Norm();
+        cumulativeArea.push_back(total);
+    }
+    std::vector<SurfacePick> picks;
+    if (!(total > 0))
+        return picks;
+    const AreaGuide faceAt(cumulativeArea);
+    picks.reserve(count);
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const double pick = unit(rng) * total;
+        const std::size_t k = std::min(faces.size() - 1, faceAt(pick));
+        double u = unit(rng), v = unit(rng);
+        if (u + v > 1) {
+            u = 1 - u;
+            v = 1 - v;
+        }
+        picks.push_back({k, u, v, mortonOrder(u, v)});
+    }
+    return groupedByFace(picks, faces.size());
+}
+
 }  // namespace detail
 
 // `sampled(face)`, when given, picks the faces the random points and the per-face points are
@@ -288,37 +329,9 @@ HausdorffSamples hausdorffSamples(MeshFrom& from, std::size_t faceSamples, unsig
             result.vertexIndex.push_back(i);
             points.push_back(vcg::Point3d::Construct(from.vert[i].cP()));
         }
-    std::vector<double> cumulativeArea;
-    cumulativeArea.reserve(sources.size());
-    double total = 0.0;
-    for (auto* f : sources) {
-        const vcg::Point3d a = vcg::Point3d::Construct(f->cP(0));
-        total += 0.5 * ((vcg::Point3d::Construct(f->cP(1)) - a) ^ (vcg::Point3d::Construct(f->cP(2)) - a)).Norm();
-        cumulativeArea.push_back(total);
-    }
-    struct Sample {
-        std::size_t face;
-        double u, v;
-        std::uint32_t order;  // along a face: points in a row lie near each other
-    };
-    const detail::AreaGuide faceAt(cumulativeArea);
-    std::vector<Sample> picks;
-    picks.reserve(total > 0 ? faceSamples : 0);
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    for (std::size_t i = 0; i < faceSamples && total > 0; ++i) {
-        const double pick = unit(rng) * total;
-        const std::size_t k = std::min(sources.size() - 1, faceAt(pick));
-        double u = unit(rng), v = unit(rng);
-        if (u + v > 1) {
-            u = 1 - u;
-            v = 1 - v;
-        }
-        picks.push_back({k, u, v, detail::mortonOrder(u, v)});
-    }
-    picks = detail::groupedByFace(picks, sources.size());
+    const std::vector<detail::SurfacePick> picks = detail::areaUniformPicks(sources, faceSamples, seed);
     points.reserve(points.size() + picks.size());
-    for (const Sample& sample : picks) {
+    for (const detail::SurfacePick& sample : picks) {
         const auto* f = sources[sample.face];
         const vcg::Point3d a = vcg::Point3d::Construct(f->cP(0));
         const vcg::Point3d b = vcg::Point3d::Construct(f->cP(1));

@@ -19,7 +19,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <random>
 #include <vector>
 
 namespace cadlod {
@@ -36,48 +35,20 @@ struct ShadingDeviation {
 
 namespace detail {
 
-// A point on a mesh: its face and the weights of the face's corners 1 and 2.
-struct SurfacePoint {
-    std::size_t face = 0;  // index into mesh.face
-    double u = 0, v = 0;
-    std::uint32_t order = 0;  // along the face (groupedByFace)
-};
+// A point on a mesh: its face (index into mesh.face) and the weights of the face's corners
+// 1 and 2.
+using SurfacePoint = SurfacePick;
 
-// `count` area-uniform points on the live faces of m, face by face (lookups in a row near
-// each other are fast); a fixed seed gives the same points for the same mesh.
+// `count` area-uniform points on the live faces of m (areaUniformPicks), with their faces'
+// indices into m.face.
 template <class MeshType>
 std::vector<SurfacePoint> surfacePoints(const MeshType& m, std::size_t count, unsigned seed)
 {
-    std::vector<std::size_t> faces;
-    std::vector<double> cumulativeArea;
-    double total = 0.0;
-    for (std::size_t i = 0; i < m.face.size(); ++i) {
-        if (m.face[i].IsD())
-            continue;
-        total += 0.5 * vcg::Point3d::Construct(vcg::TriangleNormal(m.face[i])).Norm();
-        faces.push_back(i);
-        cumulativeArea.push_back(total);
-    }
-    std::vector<SurfacePoint> picks;
-    if (!(total > 0))
-        return picks;
-    const AreaGuide faceAt(cumulativeArea);
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    picks.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::size_t k = std::min(faces.size() - 1, faceAt(unit(rng) * total));
-        double u = unit(rng), v = unit(rng);
-        if (u + v > 1) {
-            u = 1 - u;
-            v = 1 - v;
-        }
-        picks.push_back({k, u, v, mortonOrder(u, v)});
-    }
-    picks = groupedByFace(picks, faces.size());
-    for (SurfacePoint& p : picks)
-        p.face = faces[p.face];
-    return picks;
+    const auto faces = liveFaces(m);
+    std::vector<SurfacePoint> points = areaUniformPicks(faces, count, seed);
+    for (SurfacePoint& p : points)
+        p.face = std::size_t(faces[p.face] - &m.face[0]);
+    return points;
 }
 
 template <class FaceType>
@@ -123,22 +94,39 @@ std::size_t visiblyDifferent(const MeshFrom& from, const CreaseFans& fromFans, c
 
 }  // namespace detail
 
-// The shading deviation between `input` and `result`, `samplesPerSide` points on each, a
-// normal counting as visibly changed past `visibleChange`. `toInput` indexes `input` (built
-// once when several results are measured against it).
+// The input's side of the measure, prepared once for every result measured against it:
+// its smooth fans, its points, and `closest`, the index of its faces (a Hausdorff
+// measure's, built once too).
+template <class MeshA>
+struct ShadingInput {
+    ShadingInput(MeshA& m, const detail::ClosestFace<MeshA>& closest, std::size_t samplesPerSide, unsigned seed)
+        : mesh(m), fans(m), closest(closest), points(detail::surfacePoints(m, samplesPerSide, seed)),
+          samplesPerSide(samplesPerSide), resultSeed(seed + 1)
+    {
+    }
+    MeshA& mesh;
+    CreaseFans fans;
+    const detail::ClosestFace<MeshA>& closest;
+    std::vector<detail::SurfacePoint> points;
+    std::size_t samplesPerSide;
+    unsigned resultSeed;  // the seed of the points on a result
+};
+
+// The shading deviation between the input and `result` (`toResult` indexes its faces), a
+// normal counting as visibly changed past `visibleChange`.
 template <class MeshA, class MeshB>
-ShadingDeviation shadingDeviation(MeshA& input, const detail::ClosestFace<MeshA>& toInput, MeshB& result,
-                                  std::size_t samplesPerSide, unsigned seed,
+ShadingDeviation shadingDeviation(const ShadingInput<MeshA>& input, MeshB& result,
+                                  const detail::ClosestFace<MeshB>& toResult,
                                   double visibleChange = kVisibleNormalChange)
 {
-    const CreaseFans inputFans(input), resultFans(result);
-    const detail::ClosestFace<MeshB> toResult(result);
-    const auto onInput = detail::surfacePoints(input, samplesPerSide, seed);
-    const auto onResult = detail::surfacePoints(result, samplesPerSide, seed + 1);
+    const CreaseFans resultFans(result);
+    const auto onResult = detail::surfacePoints(result, input.samplesPerSide, input.resultSeed);
     ShadingDeviation d;
-    d.samples = onInput.size() + onResult.size();
-    d.turned = detail::visiblyDifferent(input, inputFans, onInput, result, resultFans, toResult, visibleChange) +
-               detail::visiblyDifferent(result, resultFans, onResult, input, inputFans, toInput, visibleChange);
+    d.samples = input.points.size() + onResult.size();
+    d.turned = detail::visiblyDifferent(input.mesh, input.fans, input.points, result, resultFans, toResult,
+                                        visibleChange) +
+               detail::visiblyDifferent(result, resultFans, onResult, input.mesh, input.fans, input.closest,
+                                        visibleChange);
     return d;
 }
 

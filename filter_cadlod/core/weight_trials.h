@@ -158,8 +158,11 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
 {
     CoreMesh input;
     detail::copyForTrial(input, m);
+    // The input's side of both measures, drawn once for all the trials.
     detail::ClosestFace<CoreMesh> toInput(input);
     const std::size_t samples = std::max(std::size_t(input.fn), kTrialMinSamples);
+    const HausdorffSamples onInput = hausdorffSamples(input, samples, kTrialSeedForward);
+    const ShadingInput<CoreMesh> shadingInput(input, toInput, kTrialShadingSamples, kTrialShadingSeed);
     std::vector<WeightTrial> trials;
     const int count = int(std::size(kTrialWeightFactors));
     for (int k = 0; k < count; ++k) {
@@ -174,11 +177,12 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
         p.weightTrialsMaxFaces = 0;
         const SimplifyStats s = simplifyCopy(trial, p);
         t.reached = s.ok && trial.fn <= s.targetFaces;
-        const double forward = oneSidedHausdorff(input, trial, samples, kTrialSeedForward).max;
+        const detail::ClosestFace<CoreMesh> toTrial(trial);
+        const double forward = distancesToSurface(onInput, toTrial).max;
         const double backward = oneSidedHausdorff(trial, toInput, samples, kTrialSeedBackward).max;
         t.hausdorff = std::max(forward, backward);
         t.slivers = meshCompactness(trial).shareBelow01;
-        t.shading = shadingDeviation(input, toInput, trial, kTrialShadingSamples, kTrialShadingSeed).share();
+        t.shading = shadingDeviation(shadingInput, trial, toTrial).share();
         trials.push_back(t);
     }
     return trials;

@@ -25,8 +25,8 @@ void cylinder(TestMesh& m, int segments)
 
 double deviation(TestMesh& input, TestMesh& result)
 {
-    const detail::ClosestFace<TestMesh> toInput(input);
-    const ShadingDeviation d = shadingDeviation(input, toInput, result, 20000, 7);
+    const detail::ClosestFace<TestMesh> toInput(input), toResult(result);
+    const ShadingDeviation d = shadingDeviation(ShadingInput<TestMesh>(input, toInput, 20000, 7), result, toResult);
     EXPECT_EQ(d.samples, 40000u);
     return d.share();
 }
