@@ -99,6 +99,27 @@ public:
             nearestFace_[face] = nearestFace_[like];
     }
 
+    // How many live faces of `m` face away from the input surface nearest to them, each
+    // looked up afresh (`m` need not be the mesh the surface was made of).
+    template <class MeshType>
+    int turnedFaces(const MeshType& m)
+    {
+        int turned = 0;
+        for (const auto& f : m.face) {
+            if (f.IsD())
+                continue;
+            const vcg::Point3d a = vcg::Point3d::Construct(f.cP(0)), b = vcg::Point3d::Construct(f.cP(1)),
+                               c = vcg::Point3d::Construct(f.cP(2));
+            const vcg::Point3d n = (b - a) ^ (c - a);
+            const double len = n.Norm();
+            if (len > 0 && !facesAlong(kNoHint, (a + b + c) / 3.0, n / len))
+                ++turned;
+        }
+        return turned;
+    }
+
+    static constexpr std::size_t kNoHint = std::size_t(-1);
+
 private:
     // The sign is all that counts: the input face's normal need not be unit.
     bool sameSide(std::size_t face, const vcg::Point3d& normal) const

@@ -27,15 +27,6 @@
 
 namespace cadlod {
 
-// Below this share of its input faces a mesh is in the far field (issue 13), where the
-// input-surface check gives way and, toward a face target, operations are ranked by the
-// largest distance they open (far_field.h): the paper's levels and issue 14's reductions
-// stop at 95 %.
-inline constexpr double kFacingFarField = 0.05;
-// A collapse that turns a face away from the input surface is priced at this many times the
-// feature penalty. A broken feature's error is in the quadric (its constraint planes); a
-// face lit as the far side is an error the quadric does not see at all.
-inline constexpr double kFacingOverFeature = 2.0;
 
 // The input points an error-bounded session keeps for the far field (an LOD chain's
 // piece): its levels are measured against level 0 independently, and the ratio of that
@@ -267,7 +258,7 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     ctx.farFieldFloor = int(kFacingFarField * m.fn);
     if (params.normalCheck && params.facingCheck) {
         ctx.surface = std::make_shared<InputSurface>(m, ctx.diagonal);
-        ctx.facingPenalty = kFacingOverFeature * params.featurePenalty;
+        ctx.facingPenalty = facingPenaltyOf(params);
         ctx.faceCount = &m.fn;
     }
     // A face target in the far field, or a bounded session its caller takes into it
@@ -339,8 +330,8 @@ bool runHeap(vcg::LocalOptimization<MeshType>& session)
 //      at featurePenalty times their error (cad_edge_collapse.h), and so is removing a
 //      small component whole (component_removal.h): they run when they are cheaper;
 //      so is a collapse that turns a face away from the input surface near it
-//      (input_surface.h), which a viewer sees lit as the wrong side, at kFacingOverFeature
-//      times that penalty; in the far field (the mesh down to kFacingFarField of its
+//      (input_surface.h), which a viewer sees lit as the wrong side, at facingPenalty
+//      (by default kFacingOverFeature times that penalty); in the far field (the mesh down to kFacingFarField of its
 //      faces) that check gives way, and toward a face target every operation is ranked by
 //      the largest distance it opens instead (far_field.h), both logged; and so is
 //      cutting a tunnel whose rim has shrunk to three edges, where the link condition
@@ -464,9 +455,12 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
             m, params, [&](CoreMesh& copy, const SimplifyParams& p) { return simplify(copy, p, nullptr, together); },
             progress);
         const std::size_t best = closestTrial(trials);
-        if (best < trials.size())
+        if (best < trials.size()) {
             chosen.largeFaceWeight = trials[best].weight;
-        stats.weightTrials = detail::describeTrials(trials, best, liveDiagonal(m));
+            chosen.featurePenalty = trials[best].featurePenalty;
+            chosen.facingPenalty = facingPenaltyOf(params);
+        }
+        stats.weightTrials = detail::describeTrials(trials, best, liveDiagonal(m), params.featurePenalty);
     }
     return simplifyWith(m, chosen, stats, start, progress, together);
 }

@@ -83,6 +83,10 @@ struct SimplifyParams {
     // What a collapse that breaks a feature (crosses a crease, moves a corner or boundary
     // vertex) is ranked at: this many times its quadric cost. 0: features are hard locks.
     double featurePenalty = 4.0;
+    // What a collapse that leaves a face turned over 90° from the input surface nearest to it
+    // (facingCheck) is ranked at: this many times its priority; 0: refused. Below 0,
+    // kFacingOverFeature times featurePenalty (facingPenaltyOf).
+    double facingPenalty = -1.0;
     // Cut non-manifold edges apart first (non_manifold_split.h); when the face target is not
     // reached with the shape guards on, relax them; then remove the smallest connected
     // components whole (each logged). Off: stop early, non-manifold edges locked.
@@ -98,6 +102,23 @@ struct SimplifyParams {
     // would cost more than a second each.
     int weightTrialsMaxFaces = 200000;
 };
+
+// Below this share of its input faces a mesh is in the far field (issue 13), where the
+// input-surface check gives way and, toward a face target, operations are ranked by the
+// largest distance they open (far_field.h): the paper's levels and issue 14's reductions
+// stop at 95 %.
+inline constexpr double kFacingFarField = 0.05;
+
+// A collapse that turns a face away from the input surface is priced at this many times the
+// feature penalty, unless facingPenalty says otherwise. A broken feature's error is in the
+// quadric (its constraint planes); a face lit as the far side is an error the quadric does
+// not see at all.
+inline constexpr double kFacingOverFeature = 2.0;
+
+inline double facingPenaltyOf(const SimplifyParams& p)
+{
+    return p.facingPenalty >= 0 ? p.facingPenalty : kFacingOverFeature * p.featurePenalty;
+}
 
 struct SimplifyStats {
     bool ok = false;            // false: nothing was done, `message` says why

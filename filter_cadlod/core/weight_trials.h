@@ -1,16 +1,18 @@
-// Plane-weight trials: how much a large face's plane weighs in the quadrics
-// (SimplifyParams::largeFaceWeight) decides what a far reduction gives up. Light, and a
-// small part keeps its tabs and bumps while a long cylinder is merged into a few facets;
-// heavy, and the cylinder stays round while the small details go. Which is closer to the
-// input depends on the part, so a mesh small enough to simplify in about a second is
-// simplified once per weight on a copy, each result is measured against the input
-// (symmetric Hausdorff distance, the share a viewer sees lit differently, sliver share),
-// and the weight of the closest is used.
-// simplify() then runs with that weight on the mesh itself; the trials never touch it.
+// Weight trials: how much a large face's plane weighs in the quadrics
+// (SimplifyParams::largeFaceWeight) and what breaking a feature costs (featurePenalty) decide
+// what a far reduction gives up. Light planes, and a small part keeps its tabs and bumps
+// while a long cylinder is merged into a few facets; heavy, and the cylinder stays round
+// while the small details go, and all the more readily when their creases cost no more than
+// their distance. Which is closer to the input depends on the part, so a mesh small enough to
+// simplify in about a second is simplified once per pair of weights on a copy, each result is
+// measured against the input (symmetric Hausdorff distance, the share a viewer sees lit
+// differently, sliver share), and the weights of the closest are used.
+// simplify() then runs with those weights on the mesh itself; the trials never touch it.
 #pragma once
 
 #include "compactness.h"
 #include "hausdorff.h"
+#include "input_surface.h"
 #include "layer_metadata.h"
 #include "shading_deviation.h"
 #include "simplify_params.h"
@@ -28,8 +30,23 @@
 
 namespace cadlod {
 
-// The weights tried, as multiples of the caller's largeFaceWeight: the caller's own first.
-inline constexpr double kTrialWeightFactors[] = {1.0, 10.0, 40.0};
+// One trial's weights: its plane weight as a multiple of the caller's largeFaceWeight, and
+// whether features keep the caller's featurePenalty or cost only their quadric error (a
+// penalty of 1; a caller's hard locks, 0, stay locks). A face turned away from the input
+// surface keeps the caller's price either way (facingPenalty).
+struct TrialWeights {
+    double plane = 1.0;
+    bool featuresPriced = true;
+};
+// The trials, the caller's own weights first. The heaviest plane weight runs with features
+// at their quadric cost: a part whose long cylinders decide what a viewer sees (a battery
+// holder's trough) gives up its small creased details for them (docs/benchmarks.md, issue
+// 14's "Weights in the trials").
+inline constexpr TrialWeights kTrials[] = {{1.0, true}, {10.0, true}, {40.0, true}, {200.0, false}};
+// Features go at their cost only where the target leaves at most this share of the faces:
+// there, keeping every crease takes the faces the large surfaces need; above it, a feature
+// keeps its price (a tube's rim stays on its polyline at 75 %).
+inline constexpr double kFeaturesAtCostShare = 0.1;
 // A sliver share more than this above the lowest of the trials counts against a trial, as
 // one more "best distance" per kTrialSliverStep beyond it: a heavier weight may buy its
 // distance with slivers, and that is not closer to the input.
@@ -41,6 +58,10 @@ inline constexpr double kTrialSliverStep = 0.05;
 // on the tuning corpus (docs/benchmarks.md, "Shading in the trials").
 inline constexpr double kTrialShadingWeight = 0.7;
 inline constexpr double kTrialShadingFloor = 0.005;
+// Each face a trial turns away from the input surface nearest it (lit as the far side)
+// beyond the fewest any trial turns counts as one more "best distance" against it: a turned
+// face is taken only for a distance more than halved.
+inline constexpr double kTrialTurnedFaceWeight = 1.0;
 // Seeds of the trials' surface samples (the bench and the report use others), and the
 // fewest samples per side: the largest distance of a coarse result is a spot a few
 // thousand samples miss (a 384-face tube at 90 % measured 3.1 % of the diagonal with 384
@@ -52,12 +73,26 @@ inline constexpr std::size_t kTrialShadingSamples = 50000;
 inline constexpr unsigned kTrialShadingSeed = 103;
 
 struct WeightTrial {
-    double weight = 0.0;
+    double weight = 0.0;     // largeFaceWeight
     double hausdorff = 0.0;  // symmetric maximum, model units
     double slivers = 0.0;    // share of faces with compactness < 0.1
     double shading = 0.0;    // share of the surfaces lit visibly differently (shading_deviation.h)
     bool reached = false;    // the trial reached its face target
+    double featurePenalty = 4.0;
+    int turned = 0;          // faces turned away from the input surface nearest them (input_surface.h)
 };
+
+// The caller's parameters with a trial's weights. The facing price stays the caller's.
+inline SimplifyParams trialParams(const SimplifyParams& caller, const TrialWeights& w)
+{
+    SimplifyParams p = caller;
+    p.largeFaceWeight = caller.largeFaceWeight * w.plane;
+    p.facingPenalty = facingPenaltyOf(caller);
+    if (!w.featuresPriced && caller.featurePenalty > 0)
+        p.featurePenalty = std::min(caller.featurePenalty, 1.0);
+    p.weightTrialsMaxFaces = 0;
+    return p;
+}
 
 // Whether simplify() runs trials for this mesh and these parameters: a face target, a
 // plane weight to vary, the whole mesh to work on, and a mesh below the size limit.
@@ -71,14 +106,20 @@ bool weightTrialsApply(const MeshType& m, const SimplifyParams& p)
 
 // The closest trial: the lowest sum of its Hausdorff distance over the least of the trials
 // and its shading deviation over the least (kTrialShadingWeight), a trial's excess slivers
-// counted against it (kTrialSliverStep). Trials that stopped above their target are taken
-// only when none reached it.
+// (kTrialSliverStep) and every face it turns away from the input surface beyond the fewest
+// (kTrialTurnedFaceWeight) counted against it. Trials that stopped above their target are
+// taken only when none reached it.
 inline std::size_t closestTrial(const std::vector<WeightTrial>& trials)
 {
     const bool anyReached = std::any_of(trials.begin(), trials.end(), [](const WeightTrial& t) { return t.reached; });
+    auto candidate = [&](const WeightTrial& t) { return t.reached || !anyReached; };
+    int fewestTurned = std::numeric_limits<int>::max();
+    for (const WeightTrial& t : trials)
+        if (candidate(t))
+            fewestTurned = std::min(fewestTurned, t.turned);
     double leastDistance = std::numeric_limits<double>::max(), leastSlivers = 1.0, leastShading = 1.0;
     for (const WeightTrial& t : trials)
-        if (t.reached || !anyReached) {
+        if (candidate(t)) {
             leastDistance = std::min(leastDistance, t.hausdorff);
             leastSlivers = std::min(leastSlivers, t.slivers);
             leastShading = std::min(leastShading, t.shading);
@@ -88,11 +129,12 @@ inline std::size_t closestTrial(const std::vector<WeightTrial>& trials)
         const double shading =
             std::max(t.shading, kTrialShadingFloor) / std::max(leastShading, kTrialShadingFloor);
         return distance + kTrialShadingWeight * shading +
-               std::max(0.0, t.slivers - leastSlivers - kTrialSliverMargin) / kTrialSliverStep;
+               std::max(0.0, t.slivers - leastSlivers - kTrialSliverMargin) / kTrialSliverStep +
+               kTrialTurnedFaceWeight * (t.turned - fewestTurned);
     };
     std::size_t best = trials.size();
     for (std::size_t i = 0; i < trials.size(); ++i)
-        if ((trials[i].reached || !anyReached) && (best == trials.size() || score(trials[i]) < score(trials[best])))
+        if (candidate(trials[i]) && (best == trials.size() || score(trials[i]) < score(trials[best])))
             best = i;
     return best;
 }
@@ -133,19 +175,32 @@ void copyForTrial(CoreMesh& to, MeshType& from)
     vcg::tri::UpdateTopology<CoreMesh>::VertexFace(to);
 }
 
-inline std::string describeTrials(const std::vector<WeightTrial>& trials, std::size_t chosen, double diagonal)
+// "0.2", or "1 with feature penalty 1" where the trial's penalty is not the caller's.
+inline std::string describeWeights(const char* what, const WeightTrial& t, double callerPenalty = -1)
 {
-    std::string line = "plane weights tried (Hausdorff % of the diagonal, shading %, slivers %):";
+    char text[96];
+    if (callerPenalty >= 0 && t.featurePenalty != callerPenalty)
+        std::snprintf(text, sizeof text, "%s%s%.4g with feature penalty %.4g", what, *what ? " " : "", t.weight,
+                      t.featurePenalty);
+    else
+        std::snprintf(text, sizeof text, "%s%s%.4g", what, *what ? " " : "", t.weight);
+    return text;
+}
+
+inline std::string describeTrials(const std::vector<WeightTrial>& trials, std::size_t chosen, double diagonal,
+                                  double callerPenalty)
+{
+    std::string line = "plane weights tried (Hausdorff % of the diagonal, shading %, slivers %, faces turned):";
     char item[128];
     for (std::size_t i = 0; i < trials.size(); ++i) {
-        std::snprintf(item, sizeof item, "%s %.4g (%.4f, %.2f, %.1f%s)", i ? ";" : "", trials[i].weight,
+        std::snprintf(item, sizeof item, " (%.4f, %.2f, %.1f, %d%s)",
                       diagonal > 0 ? 100 * trials[i].hausdorff / diagonal : 0.0, 100 * trials[i].shading,
-                      100 * trials[i].slivers,
-                      trials[i].reached ? "" : ", short of the target");
-        line += item;
+                      100 * trials[i].slivers, trials[i].turned, trials[i].reached ? "" : ", short of the target");
+        line += (i ? "; " : " ") + describeWeights("", trials[i], callerPenalty) + item;
     }
-    std::snprintf(item, sizeof item, "; kept %.4g", chosen < trials.size() ? trials[chosen].weight : 0.0);
-    return line + item;
+    if (chosen < trials.size())
+        line += "; kept " + describeWeights("", trials[chosen], callerPenalty);
+    return line;
 }
 
 }  // namespace detail
@@ -163,18 +218,25 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
     const std::size_t samples = std::max(std::size_t(input.fn), kTrialMinSamples);
     const HausdorffSamples onInput = hausdorffSamples(input, samples, kTrialSeedForward);
     const ShadingInput<CoreMesh> shadingInput(input, toInput, kTrialShadingSamples, kTrialShadingSeed);
+    InputSurface surface(input, liveDiagonal(input));
+    // Turned faces count where simplify() checks them: not when the target is in the far field.
+    const int target = targetFaceCount(params, input.fn);
+    const bool countTurned = target >= kFacingFarField * input.fn;
+    std::vector<TrialWeights> tried;
+    for (const TrialWeights& w : kTrials)
+        if (w.featuresPriced || target <= kFeaturesAtCostShare * input.fn + 0.5)
+            tried.push_back(w);
     std::vector<WeightTrial> trials;
-    const int count = int(std::size(kTrialWeightFactors));
+    const int count = int(tried.size());
     for (int k = 0; k < count; ++k) {
+        const SimplifyParams p = trialParams(params, tried[k]);
         WeightTrial t;
-        t.weight = params.largeFaceWeight * kTrialWeightFactors[k];
+        t.weight = p.largeFaceWeight;
+        t.featurePenalty = p.featurePenalty;
         if (progress)
-            progress(100 * k / (count + 1), ("Trying plane weight " + std::to_string(t.weight)).c_str());
+            progress(100 * k / (count + 1), detail::describeWeights("Trying plane weight", t, params.featurePenalty).c_str());
         CoreMesh trial;
         detail::copyForTrial(trial, m);
-        SimplifyParams p = params;
-        p.largeFaceWeight = t.weight;
-        p.weightTrialsMaxFaces = 0;
         const SimplifyStats s = simplifyCopy(trial, p);
         t.reached = s.ok && trial.fn <= s.targetFaces;
         const detail::ClosestFace<CoreMesh> toTrial(trial);
@@ -183,6 +245,7 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
         t.hausdorff = std::max(forward, backward);
         t.slivers = meshCompactness(trial).shareBelow01;
         t.shading = shadingDeviation(shadingInput, trial, toTrial).share();
+        t.turned = countTurned ? surface.turnedFaces(trial) : 0;
         trials.push_back(t);
     }
     return trials;
