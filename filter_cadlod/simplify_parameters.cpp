@@ -49,7 +49,7 @@ void addPlacementParameters(RichParameterList& par)
     par.addParam(RichFloat("largeFaceWeight", d.largeFaceWeight, "Large-face weight",
                            "Share of a face's full area added to the nearly equal weight every face's plane gets: large faces (a plate's top) keep their place. 0: all faces weigh the same."));
     par.addParam(RichBool("weightTrials", d.weightTrialsMaxFaces > 0, "Try plane weights",
-                          "A mesh of fewer than 200 000 faces with a face target is first simplified on copies with the large-face weight times 1, 10 and 40, and the weight whose result is nearest the input (Hausdorff distance and the share of the surface lit differently, slivers) is used (logged). Off: the large-face weight as given."));
+                          "A mesh of fewer than 200 000 faces with a face target is first simplified on copies with the large-face weight times 1, 10 and 40 (and, where at most a tenth of the faces is left, times 200 with features at their plain quadric cost), and the weights whose result is nearest the input (Hausdorff distance, the share of the surface lit differently, slivers, faces turned over) are used (logged). Off: the large-face weight as given."));
     par.addParam(RichFloat("shadingWeight", d.shadingWeight, "Shading weight",
                            "A collapse that turns faces more than the shading angle from their input faces also costs this times the squared bbox diagonal times their area times (1 - cos of the turn). 0: geometry alone."));
     par.addParam(RichFloat("shadingAngle", d.shadingAngle, "Shading angle (degrees)",
