@@ -27,7 +27,6 @@
 
 namespace cadlod {
 
-
 // The input points an error-bounded session keeps for the far field (an LOD chain's
 // piece): its levels are measured against level 0 independently, and the ratio of that
 // measure to the distances opened steers the budgets (lod_chain.h), so a sample serves.
@@ -331,8 +330,8 @@ bool runHeap(vcg::LocalOptimization<MeshType>& session)
 //      small component whole (component_removal.h): they run when they are cheaper;
 //      so is a collapse that turns a face away from the input surface near it
 //      (input_surface.h), which a viewer sees lit as the wrong side, at facingPenalty
-//      (by default kFacingOverFeature times that penalty); in the far field (the mesh down to kFacingFarField of its
-//      faces) that check gives way, and toward a face target every operation is ranked by
+//      (by default kFacingOverFeature times that penalty); in the far field (the mesh
+//      down to kFacingFarField of its faces) that check gives way, and toward a face target every operation is ranked by
 //      the largest distance it opens instead (far_field.h), both logged; and so is
 //      cutting a tunnel whose rim has shrunk to three edges, where the link condition
 //      refuses every collapse (tunnel_cut.h), logged; and so is a collapse the link
@@ -455,11 +454,8 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
             m, params, [&](CoreMesh& copy, const SimplifyParams& p) { return simplify(copy, p, nullptr, together); },
             progress);
         const std::size_t best = closestTrial(trials);
-        if (best < trials.size()) {
-            chosen.largeFaceWeight = trials[best].weight;
-            chosen.featurePenalty = trials[best].featurePenalty;
-            chosen.facingPenalty = facingPenaltyOf(params);
-        }
+        if (best < trials.size())
+            chosen = trialParams(params, trials[best].weights);
         stats.weightTrials = detail::describeTrials(trials, best, liveDiagonal(m), params.featurePenalty);
     }
     return simplifyWith(m, chosen, stats, start, progress, together);

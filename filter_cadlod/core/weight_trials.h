@@ -25,6 +25,7 @@
 #include <cstdio>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -80,9 +81,11 @@ struct WeightTrial {
     bool reached = false;    // the trial reached its face target
     double featurePenalty = 4.0;
     int turned = 0;          // faces turned away from the input surface nearest them (input_surface.h)
+    TrialWeights weights;    // what the trial ran with (trialParams)
 };
 
-// The caller's parameters with a trial's weights. The facing price stays the caller's.
+// The caller's parameters with a trial's weights, for the trial and for the run with the
+// weights kept. The facing price stays the caller's.
 inline SimplifyParams trialParams(const SimplifyParams& caller, const TrialWeights& w)
 {
     SimplifyParams p = caller;
@@ -218,10 +221,11 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
     const std::size_t samples = std::max(std::size_t(input.fn), kTrialMinSamples);
     const HausdorffSamples onInput = hausdorffSamples(input, samples, kTrialSeedForward);
     const ShadingInput<CoreMesh> shadingInput(input, toInput, kTrialShadingSamples, kTrialShadingSeed);
-    InputSurface surface(input, liveDiagonal(input));
     // Turned faces count where simplify() checks them: not when the target is in the far field.
     const int target = targetFaceCount(params, input.fn);
-    const bool countTurned = target >= kFacingFarField * input.fn;
+    std::optional<InputSurface> surface;
+    if (target >= kFacingFarField * input.fn)
+        surface.emplace(input, liveDiagonal(input));
     std::vector<TrialWeights> tried;
     for (const TrialWeights& w : kTrials)
         if (w.featuresPriced || target <= kFeaturesAtCostShare * input.fn + 0.5)
@@ -231,10 +235,12 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
     for (int k = 0; k < count; ++k) {
         const SimplifyParams p = trialParams(params, tried[k]);
         WeightTrial t;
+        t.weights = tried[k];
         t.weight = p.largeFaceWeight;
         t.featurePenalty = p.featurePenalty;
         if (progress)
-            progress(100 * k / (count + 1), detail::describeWeights("Trying plane weight", t, params.featurePenalty).c_str());
+            progress(100 * k / (count + 1),
+                     detail::describeWeights("Trying plane weight", t, params.featurePenalty).c_str());
         CoreMesh trial;
         detail::copyForTrial(trial, m);
         const SimplifyStats s = simplifyCopy(trial, p);
@@ -245,7 +251,7 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
         t.hausdorff = std::max(forward, backward);
         t.slivers = meshCompactness(trial).shareBelow01;
         t.shading = shadingDeviation(shadingInput, trial, toTrial).share();
-        t.turned = countTurned ? surface.turnedFaces(trial) : 0;
+        t.turned = surface ? surface->turnedFaces(trial) : 0;
         trials.push_back(t);
     }
     return trials;
