@@ -42,6 +42,7 @@
 #include "collapse_edge.h"
 #include "collapse_heap.h"
 #include "compactness.h"
+#include "crease_fans.h"
 #include "far_field.h"
 #include "feature_edges.h"
 #include "input_surface.h"
@@ -76,6 +77,10 @@ struct RingFace {
     double normalLength;    // |normal|
     vcg::Point3d original;  // unit normal the face had in the input (zero if none)
     double abSquared;       // |b - a|²
+    // With keepSmoothJoins: the unit normal of the face beyond the outer edge a-b (zero
+    // where there is none), and the endpoint the face is around (0: v0, 1: v1).
+    vcg::Point3d beyond{0, 0, 0};
+    int side = 0;
 };
 
 struct PlacementScore {
@@ -174,6 +179,7 @@ struct CollapseContext : public vcg::BaseParameterClass {
     double maxDistance = 0.0;
     double cosNormalLimit = -1.0;
     double cosShadingAngle = 1.0;  // faces turned further from their input face change shade
+    double cosSmoothJoin = -2.0;   // keepSmoothJoins: cosine of the crease angle; below -1: off
     double shadingScale = 0.0;     // shadingWeight × diagonal²: the price of a unit of turned area
     double largestError = 0.0;    // over executed collapses
     double largestDistance = 0.0; // over operations held to maxDistance (far field)
@@ -758,9 +764,13 @@ private:
                     const vcg::Point3d pb = vcg::Point3d::Construct(b->cP());
                     const vcg::Point3d pv = vcg::Point3d::Construct(v->cP());
                     const vcg::Point3d normal = (pa - pv) ^ (pb - pv);
-                    const RingFace face{pa, pb, normal, normal.Norm(),
-                                        vcg::Point3d::Construct(ctx.inputNormal[f - ctx.faceBase]),
-                                        (pb - pa).SquaredNorm()};
+                    RingFace face{pa, pb, normal, normal.Norm(),
+                                  vcg::Point3d::Construct(ctx.inputNormal[f - ctx.faceBase]),
+                                  (pb - pa).SquaredNorm()};
+                    if (ctx.cosSmoothJoin >= -1.0) {
+                        faceBeyond(f, a, b, v0, v1, face);
+                        face.side = side;
+                    }
                     const double edges = (pa - pv).SquaredNorm() + (pb - pv).SquaredNorm() + face.abSquared;
                     n.worstCompactness = std::min(n.worstCompactness, compactnessFrom(face.normalLength, edges));
                     ctx.ring.push_back(face);
@@ -816,7 +826,8 @@ private:
     // fall below `floor`, flipped if one turns too far. `failed` is the ring face that made
     // the last candidate invalid (-1: none): most refused edges are refused by one face for
     // every candidate, so it is tried first. It is set to the face that fails this one.
-    PlacementScore score(const Context& ctx, const vcg::Point3d& p, double floor, int& failed) const
+    PlacementScore score(const Context& ctx, const vcg::Point3d& p, double floor, int& failed,
+                         bool keepsSmoothJoins) const
     {
         PlacementScore s;
         if (failed >= 0) {
@@ -835,9 +846,71 @@ private:
             }
             sum += c;
         }
+        if (keepsSmoothJoins && foldsSmoothJoin(ctx, p))
+            return s;
         s.meanCompactness = sum / double(ctx.ring.size());
         s.valid = true;
         return s;
+    }
+
+    // The face across the outer edge a-b of ring face f, for the smooth-join guard.
+    static void faceBeyond(const FaceType* f, VertexType* a, const VertexType* b,
+                           const VertexType* v0, const VertexType* v1, RingFace& face)
+    {
+        for (VFIterator vfi(a); !vfi.End(); ++vfi) {
+            const FaceType* g = vfi.F();
+            if (g == f)
+                continue;
+            bool hasB = false, inRing = false;
+            for (int k = 0; k < 3; ++k) {
+                hasB |= g->cV(k) == b;
+                inRing |= g->cV(k) == v0 || g->cV(k) == v1;
+            }
+            if (!hasB || inRing)
+                continue;
+            vcg::Point3d n = vcg::Point3d::Construct(vcg::TriangleNormal(*g));
+            const double length = n.Norm();
+            if (!(length > 0))
+                return;
+            face.beyond = n / length;
+            return;
+        }
+    }
+
+    // Whether a face around the new vertex at p folds past the crease angle
+    // (ctx.cosSmoothJoin) against a neighbour, across a spoke or its outer edge, where the two
+    // met below it before the collapse (or did not meet): the join would be drawn as a crease,
+    // each side flat-shaded, where it was smooth. (Not the faces' input normals: a face that
+    // has been through many collapses may lie far from where it was.)
+    static bool foldsSmoothJoin(const Context& ctx, const vcg::Point3d& p)
+    {
+        const double limit = ctx.cosSmoothJoin;
+        for (std::size_t i = 0; i < ctx.ring.size(); ++i) {
+            const RingFace& f = ctx.ring[i];
+            const vcg::Point3d nf = (f.a - p) ^ (f.b - p);
+            const double lf = nf.Norm();
+            if (!(lf > 0) || !(f.normalLength > 0))
+                continue;
+            const bool hasBeyond = f.beyond * f.beyond > 0;
+            if (hasBeyond && (nf * f.beyond) < limit * lf && (f.normal * f.beyond) >= limit * f.normalLength)
+                return true;  // folds against the face beyond its outer edge
+            for (std::size_t j = i + 1; j < ctx.ring.size(); ++j) {
+                const RingFace& g = ctx.ring[j];
+                const bool shareSpoke = f.a == g.a || f.a == g.b || f.b == g.a || f.b == g.b;
+                if (!shareSpoke || !(g.normalLength > 0))
+                    continue;
+                const vcg::Point3d ng = (g.a - p) ^ (g.b - p);
+                const double lg = ng.Norm();
+                const bool foldsNow = lg > 0 && (nf * ng) < limit * lf * lg;
+                // Faces around different endpoints meet for the first time (across a removed
+                // face): any fold between them is new.
+                const bool smoothBefore =
+                    f.side != g.side || (f.normal * g.normal) >= limit * f.normalLength * g.normalLength;
+                if (foldsNow && smoothBefore)
+                    return true;
+            }
+        }
+        return false;
     }
 
     struct Candidate {
@@ -985,6 +1058,7 @@ private:
         const double minFree = minCompactness > 0 ? std::max(kSliver, minCompactness) : 0.0;
         const double freeFloor = std::min(minFree, n.worstCompactness);
         auto floorFor = [&](const Candidate& c) { return c.cost <= flatFloor ? freeFloor : floor; };
+        const bool keepJoins = minCompactness > 0 && ctx.cosSmoothJoin >= -1.0;
         int best = -1;
         PlacementScore bestScore;
         bool anyFlip = false;
@@ -992,7 +1066,7 @@ private:
         for (int i = 0; i < count; ++i) {
             if (cand[i].ranked > tieLimit)
                 continue;
-            const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed);
+            const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed, keepJoins);
             anyFlip |= s.flipped;
             if (s.valid && (best < 0 || s.meanCompactness > bestScore.meanCompactness ||
                             (s.meanCompactness == bestScore.meanCompactness && cand[i].ranked < cand[best].ranked))) {
@@ -1004,7 +1078,7 @@ private:
             for (int i = 0; i < count; ++i) {
                 if (cand[i].ranked <= tieLimit || (best >= 0 && cand[i].ranked >= cand[best].ranked))
                     continue;
-                const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed);
+                const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed, keepJoins);
                 anyFlip |= s.flipped;
                 if (s.valid) {
                     best = i;
@@ -1072,7 +1146,8 @@ private:
             const double d2 = d * d + m2;
             if (d2 >= best2)
                 continue;
-            const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed);
+            // The far field's distance alone ranks its shapes: no join is kept there.
+            const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed, false);
             if (!s.valid)
                 continue;
             best = i;

@@ -221,6 +221,7 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     ctx.maxErrorAbs = params.maxError * ctx.diagonal;
     ctx.cosNormalLimit = std::cos(params.normalThreshold * M_PI / 180.0);
     ctx.cosShadingAngle = std::cos(params.shadingAngle * M_PI / 180.0);
+    ctx.cosSmoothJoin = params.keepSmoothJoins ? std::cos(CreaseFans::kCreaseDegrees * M_PI / 180.0) : -2.0;
     ctx.shadingScale = params.shadingWeight * ctx.diagonal * ctx.diagonal;
 
     stats.degenerateFaces = detail::deleteFacesRepeatingAVertex(m);

@@ -69,6 +69,13 @@ struct SimplifyParams {
     // the corpus for shading and Hausdorff together (docs/benchmarks.md).
     double shadingWeight = 1e-5;
     double shadingAngle = 12.0;      // degrees
+    // With the shape guards: no placement may fold two faces around the new vertex past the
+    // angle normals are split at (CreaseFans::kCreaseDegrees: VRML's creaseAngle, the
+    // OpenFlight export's smooth fans) where they met below it before and in the input. A
+    // coarse fillet folded into two or three facets is drawn flat-shaded, band by band, where
+    // its strips were smooth. Off by default: it costs distance on parts whose small details
+    // go instead; the weight trials try it at far reductions (weight_trials.h).
+    bool keepSmoothJoins = false;
     bool planarQuadric = false;      // tiny edge quadrics everywhere: steadier flat regions
     // Edges between faces of different cadlod_part ids as features: off by default. Parts
     // that are separate solids share no edge, so a part border exists only where the

@@ -34,19 +34,25 @@ namespace cadlod {
 // One trial's weights: its plane weight as a multiple of the caller's largeFaceWeight, and
 // whether features keep the caller's featurePenalty or cost only their quadric error (a
 // penalty of 1; a caller's hard locks, 0, stay locks). A face turned away from the input
-// surface keeps the caller's price either way (facingPenalty).
+// surface keeps the caller's price either way (facingPenalty). keepSmoothJoins: the trial
+// folds no smooth join past the crease angle (SimplifyParams::keepSmoothJoins).
 struct TrialWeights {
     double plane = 1.0;
     bool featuresPriced = true;
+    bool keepSmoothJoins = false;
 };
 // The trials, the caller's own weights first. The heaviest plane weight runs with features
 // at their quadric cost: a part whose long cylinders decide what a viewer sees (a battery
 // holder's trough) gives up its small creased details for them (docs/benchmarks.md, issue
-// 14's "Weights in the trials").
-inline constexpr TrialWeights kTrials[] = {{1.0, true}, {10.0, true}, {40.0, true}, {200.0, false}};
-// Features go at their cost only where the target leaves at most this share of the faces:
-// there, keeping every crease takes the faces the large surfaces need; above it, a feature
-// keeps its price (a tube's rim stays on its polyline at 75 %).
+// 14's "Weights in the trials"). The last keeps smooth joins: a part whose fillets a viewer
+// sees around its outline (a transformer's bobbin, a pump cover) keeps them drawn round and
+// gives up distance elsewhere, where that is closer to the input.
+inline constexpr TrialWeights kTrials[] = {
+    {1.0, true, false}, {10.0, true, false}, {40.0, true, false}, {200.0, false, false}, {10.0, true, true}};
+// Features go at their cost, and smooth joins are kept, only where the target leaves at most
+// this share of the faces: there, keeping every crease takes the faces the large surfaces
+// need; above it, a feature keeps its price (a tube's rim stays on its polyline at 75 %). The
+// far reductions are where coarse fillets fold, and each trial costs a run.
 inline constexpr double kFeaturesAtCostShare = 0.1;
 // A sliver share more than this above the lowest of the trials counts against a trial, as
 // one more "best distance" per kTrialSliverStep beyond it: a heavier weight may buy its
@@ -91,6 +97,7 @@ inline SimplifyParams trialParams(const SimplifyParams& caller, const TrialWeigh
     SimplifyParams p = caller;
     p.largeFaceWeight = caller.largeFaceWeight * w.plane;
     p.facingPenalty = facingPenaltyOf(caller);
+    p.keepSmoothJoins = caller.keepSmoothJoins || w.keepSmoothJoins;
     if (!w.featuresPriced && caller.featurePenalty > 0)
         p.featurePenalty = std::min(caller.featurePenalty, 1.0);
     p.weightTrialsMaxFaces = 0;
@@ -187,7 +194,7 @@ inline std::string describeWeights(const char* what, const WeightTrial& t, doubl
                       t.featurePenalty);
     else
         std::snprintf(text, sizeof text, "%s%s%.4g", what, *what ? " " : "", t.weight);
-    return text;
+    return std::string(text) + (t.weights.keepSmoothJoins ? " keeping smooth joins" : "");
 }
 
 inline std::string describeTrials(const std::vector<WeightTrial>& trials, std::size_t chosen, double diagonal,
@@ -228,7 +235,7 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
         surface.emplace(input, liveDiagonal(input));
     std::vector<TrialWeights> tried;
     for (const TrialWeights& w : kTrials)
-        if (w.featuresPriced || target <= kFeaturesAtCostShare * input.fn + 0.5)
+        if ((w.featuresPriced && !w.keepSmoothJoins) || target <= kFeaturesAtCostShare * input.fn + 0.5)
             tried.push_back(w);
     std::vector<WeightTrial> trials;
     const int count = int(tried.size());

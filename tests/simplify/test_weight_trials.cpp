@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <functional>
 #include <string>
 
@@ -193,8 +195,11 @@ TEST(WeightTrials, TheHeaviestTrialPricesFeaturesAtTheirCost)
     EXPECT_EQ(first.largeFaceWeight, caller.largeFaceWeight);
     EXPECT_EQ(first.featurePenalty, caller.featurePenalty);
     EXPECT_EQ(first.weightTrialsMaxFaces, 0);
-    const TrialWeights& last = kTrials[std::size(kTrials) - 1];
-    EXPECT_FALSE(last.featuresPriced);
+    const TrialWeights& last =
+        *std::find_if(std::begin(kTrials), std::end(kTrials), [](const TrialWeights& w) { return !w.featuresPriced; });
+    EXPECT_EQ(last.plane, std::max_element(std::begin(kTrials), std::end(kTrials), [](auto& a, auto& b) {
+                              return a.plane < b.plane;
+                          })->plane);
     const SimplifyParams heavy = trialParams(caller, last);
     EXPECT_GT(heavy.largeFaceWeight, 100 * caller.largeFaceWeight);
     EXPECT_EQ(heavy.featurePenalty, 1.0);
@@ -203,6 +208,28 @@ TEST(WeightTrials, TheHeaviestTrialPricesFeaturesAtTheirCost)
     caller.featurePenalty = 0;  // hard locks
     EXPECT_EQ(trialParams(caller, last).featurePenalty, 0.0);
     EXPECT_EQ(facingPenaltyOf(trialParams(caller, last)), 0.0);
+}
+
+// One trial keeps smooth joins (SimplifyParams::keepSmoothJoins, test_smooth_joins.cpp), the
+// others leave it to the caller; like the features-at-cost trial it runs only where the
+// target leaves at most a tenth of the faces, and the log names it.
+TEST(WeightTrials, OneTrialKeepsSmoothJoinsAtFarTargets)
+{
+    const auto keeping = std::count_if(std::begin(kTrials), std::end(kTrials),
+                                       [](const TrialWeights& w) { return w.keepSmoothJoins; });
+    EXPECT_EQ(keeping, 1);
+    SimplifyParams caller;
+    for (const TrialWeights& w : kTrials)
+        EXPECT_EQ(trialParams(caller, w).keepSmoothJoins, w.keepSmoothJoins);
+    for (double percent : {50.0, 90.0}) {
+        TestMesh m;
+        makeShaft(m, 48);
+        SimplifyParams p;
+        p.reductionPerc = percent;
+        const SimplifyStats s = simplify(m, p);
+        ASSERT_TRUE(s.ok) << s.message;
+        EXPECT_EQ(s.weightTrials.find("keeping smooth joins") != std::string::npos, percent >= 90) << s.weightTrials;
+    }
 }
 
 // Trials run only with a face target, a weight to vary, the whole mesh to work on and a mesh
