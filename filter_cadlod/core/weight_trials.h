@@ -235,8 +235,9 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
         surface.emplace(input, liveDiagonal(input));
     std::vector<TrialWeights> tried;
     for (const TrialWeights& w : kTrials)
-        if ((w.featuresPriced && !w.keepSmoothJoins) || target <= kFeaturesAtCostShare * input.fn + 0.5)
-            tried.push_back(w);
+        if ((w.featuresPriced && !w.keepSmoothJoins) ||
+            (target <= kFeaturesAtCostShare * input.fn + 0.5 && (target > 0 || !w.keepSmoothJoins)))
+            tried.push_back(w);  // smooth joins only toward a target the shape guards relax for (> 0)
     std::vector<WeightTrial> trials;
     const int count = int(tried.size());
     for (int k = 0; k < count; ++k) {

@@ -48,6 +48,8 @@ SimplifyStats simplifyChip(TestMesh& m, TestMesh& input, double reduction, bool 
     SimplifyParams p;
     p.reductionPerc = reduction;
     p.facingCheck = facingCheck;
+    if (!facingCheck)
+        p.weightTrialsMaxFaces = 0;  // the trials count turned faces too: without the check, nothing
     return simplify(m, p);
 }
 
