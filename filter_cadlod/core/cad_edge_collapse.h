@@ -229,6 +229,12 @@ struct CollapseContext : public vcg::BaseParameterClass {
     // diagonals.
     double farFieldPriority(double distance) const { return distance * distance / (diagonal * diagonal); }
     bool heldToDistance() const { return inFarField() && maxDistance > 0; }
+    // The smooth-join guard (keepSmoothJoins) is one of the shape guards: in force while they
+    // are, and only where the compactness guard is.
+    bool keepsSmoothJoins() const
+    {
+        return cosSmoothJoin >= -1.0 && shapeGuards && !heldToDistance() && params.minCompactness > 0;
+    }
     // Before the far field, with the input's points dealt: ranked by the quadrics, but held
     // to maxDistance by the distance each collapse opens too.
     bool checksDistance() const { return farField && farField->dealt() && !farField->started() && maxDistance > 0; }
@@ -767,7 +773,7 @@ private:
                     RingFace face{pa, pb, normal, normal.Norm(),
                                   vcg::Point3d::Construct(ctx.inputNormal[f - ctx.faceBase]),
                                   (pb - pa).SquaredNorm()};
-                    if (ctx.cosSmoothJoin >= -1.0) {
+                    if (ctx.keepsSmoothJoins()) {
                         faceBeyond(f, a, b, v0, v1, face);
                         face.side = side;
                     }
@@ -1058,7 +1064,7 @@ private:
         const double minFree = minCompactness > 0 ? std::max(kSliver, minCompactness) : 0.0;
         const double freeFloor = std::min(minFree, n.worstCompactness);
         auto floorFor = [&](const Candidate& c) { return c.cost <= flatFloor ? freeFloor : floor; };
-        const bool keepJoins = minCompactness > 0 && ctx.cosSmoothJoin >= -1.0;
+        const bool keepJoins = ctx.keepsSmoothJoins();
         int best = -1;
         PlacementScore bestScore;
         bool anyFlip = false;

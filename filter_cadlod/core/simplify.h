@@ -457,7 +457,7 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
         const std::size_t best = closestTrial(trials);
         if (best < trials.size())
             chosen = trialParams(params, trials[best].weights);
-        stats.weightTrials = detail::describeTrials(trials, best, liveDiagonal(m), params.featurePenalty);
+        stats.weightTrials = detail::describeTrials(trials, best, liveDiagonal(m), params);
     }
     return simplifyWith(m, chosen, stats, start, progress, together);
 }

@@ -36,19 +36,27 @@ namespace cadlod {
 // penalty of 1; a caller's hard locks, 0, stay locks). A face turned away from the input
 // surface keeps the caller's price either way (facingPenalty). keepSmoothJoins: the trial
 // folds no smooth join past the crease angle (SimplifyParams::keepSmoothJoins).
+// constraintPlanes: the weight of the planes that hold creases and boundaries in place, as a
+// multiple of the caller's boundaryWeight.
 struct TrialWeights {
     double plane = 1.0;
     bool featuresPriced = true;
     bool keepSmoothJoins = false;
+    double constraintPlanes = 1.0;
 };
 // The trials, the caller's own weights first. The heaviest plane weight runs with features
-// at their quadric cost: a part whose long cylinders decide what a viewer sees (a battery
-// holder's trough) gives up its small creased details for them (docs/benchmarks.md, issue
-// 14's "Weights in the trials"). The last keeps smooth joins: a part whose fillets a viewer
-// sees around its outline (a transformer's bobbin, a pump cover) keeps them drawn round and
-// gives up distance elsewhere, where that is closer to the input.
+// at their quadric cost, once with their constraint planes and once without: a part whose
+// long cylinders decide what a viewer sees (a battery holder's trough) gives up its small
+// creased details for them, and without the planes a detail's crease costs no more than the
+// faces it bends (a chip's leads, a board's parts at 95 %). One keeps smooth joins: a part
+// whose fillets a viewer sees around its outline (a transformer's bobbin, a pump cover) keeps
+// them drawn round and gives up distance elsewhere. The last runs the caller's weights with
+// the constraint planes at a quarter, at every target: a crease vertex may then leave its
+// place on a curved crease where that makes fewer slivers, judged like the others by how
+// close the result stays (docs/benchmarks.md, issue 14's "Constraint planes in the trials").
 inline constexpr TrialWeights kTrials[] = {
-    {1.0, true, false}, {10.0, true, false}, {40.0, true, false}, {200.0, false, false}, {10.0, true, true}};
+    {1.0, true, false},         {10.0, true, false},        {40.0, true, false}, {200.0, false, false},
+    {10.0, true, true},         {200.0, false, false, 0.0}, {1.0, true, false, 0.25}};
 // Features go at their cost, and smooth joins are kept, only where the target leaves at most
 // this share of the faces: there, keeping every crease takes the faces the large surfaces
 // need; above it, a feature keeps its price (a tube's rim stays on its polyline at 75 %). The
@@ -80,14 +88,12 @@ inline constexpr std::size_t kTrialShadingSamples = 50000;
 inline constexpr unsigned kTrialShadingSeed = 103;
 
 struct WeightTrial {
-    double weight = 0.0;     // largeFaceWeight
+    TrialWeights weights;    // what the trial ran with (trialParams)
     double hausdorff = 0.0;  // symmetric maximum, model units
     double slivers = 0.0;    // share of faces with compactness < 0.1
     double shading = 0.0;    // share of the surfaces lit visibly differently (shading_deviation.h)
     bool reached = false;    // the trial reached its face target
-    double featurePenalty = 4.0;
     int turned = 0;          // faces turned away from the input surface nearest them (input_surface.h)
-    TrialWeights weights;    // what the trial ran with (trialParams)
 };
 
 // The caller's parameters with a trial's weights, for the trial and for the run with the
@@ -98,10 +104,23 @@ inline SimplifyParams trialParams(const SimplifyParams& caller, const TrialWeigh
     p.largeFaceWeight = caller.largeFaceWeight * w.plane;
     p.facingPenalty = facingPenaltyOf(caller);
     p.keepSmoothJoins = caller.keepSmoothJoins || w.keepSmoothJoins;
+    p.boundaryWeight = caller.boundaryWeight * w.constraintPlanes;
     if (!w.featuresPriced && caller.featurePenalty > 0)
         p.featurePenalty = std::min(caller.featurePenalty, 1.0);
     p.weightTrialsMaxFaces = 0;
     return p;
+}
+
+// Whether a trial runs toward `target` faces of an input of `faces`: the plane weights with
+// the caller's feature price always; features at their cost and smooth joins only where the
+// target leaves at most kFeaturesAtCostShare of the faces, and smooth joins only toward a
+// target above 0 (the shape guards they are one of relax only toward a face target).
+inline bool trialRunsAt(const TrialWeights& w, int target, int faces)
+{
+    const bool farTarget = target <= kFeaturesAtCostShare * faces + 0.5;
+    if (w.keepSmoothJoins)
+        return farTarget && target > 0;
+    return w.featuresPriced || farTarget;
 }
 
 // Whether simplify() runs trials for this mesh and these parameters: a face target, a
@@ -185,20 +204,24 @@ void copyForTrial(CoreMesh& to, MeshType& from)
     vcg::tri::UpdateTopology<CoreMesh>::VertexFace(to);
 }
 
-// "0.2", or "1 with feature penalty 1" where the trial's penalty is not the caller's.
-inline std::string describeWeights(const char* what, const WeightTrial& t, double callerPenalty = -1)
+// "0.2", or "1 with feature penalty 1" where the trial's penalty is not the caller's, and
+// what else differs from the caller's parameters.
+inline std::string describeWeights(const char* what, const SimplifyParams& caller, const TrialWeights& w)
 {
-    char text[96];
-    if (callerPenalty >= 0 && t.featurePenalty != callerPenalty)
-        std::snprintf(text, sizeof text, "%s%s%.4g with feature penalty %.4g", what, *what ? " " : "", t.weight,
-                      t.featurePenalty);
-    else
-        std::snprintf(text, sizeof text, "%s%s%.4g", what, *what ? " " : "", t.weight);
-    return std::string(text) + (t.weights.keepSmoothJoins ? " keeping smooth joins" : "");
+    const SimplifyParams p = trialParams(caller, w);
+    char text[160];
+    int n = std::snprintf(text, sizeof text, "%s%s%.4g", what, *what ? " " : "", p.largeFaceWeight);
+    if (p.featurePenalty != caller.featurePenalty)
+        n += std::snprintf(text + n, sizeof text - std::size_t(n), " with feature penalty %.4g", p.featurePenalty);
+    if (p.boundaryWeight != caller.boundaryWeight)
+        n += std::snprintf(text + n, sizeof text - std::size_t(n), ", constraint planes x %.4g", w.constraintPlanes);
+    if (w.keepSmoothJoins)
+        std::snprintf(text + n, sizeof text - std::size_t(n), " keeping smooth joins");
+    return text;
 }
 
 inline std::string describeTrials(const std::vector<WeightTrial>& trials, std::size_t chosen, double diagonal,
-                                  double callerPenalty)
+                                  const SimplifyParams& caller)
 {
     std::string line = "plane weights tried (Hausdorff % of the diagonal, shading %, slivers %, faces turned):";
     char item[128];
@@ -206,10 +229,10 @@ inline std::string describeTrials(const std::vector<WeightTrial>& trials, std::s
         std::snprintf(item, sizeof item, " (%.4f, %.2f, %.1f, %d%s)",
                       diagonal > 0 ? 100 * trials[i].hausdorff / diagonal : 0.0, 100 * trials[i].shading,
                       100 * trials[i].slivers, trials[i].turned, trials[i].reached ? "" : ", short of the target");
-        line += (i ? "; " : " ") + describeWeights("", trials[i], callerPenalty) + item;
+        line += (i ? "; " : " ") + describeWeights("", caller, trials[i].weights) + item;
     }
     if (chosen < trials.size())
-        line += "; kept " + describeWeights("", trials[chosen], callerPenalty);
+        line += "; kept " + describeWeights("", caller, trials[chosen].weights);
     return line;
 }
 
@@ -235,20 +258,16 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
         surface.emplace(input, liveDiagonal(input));
     std::vector<TrialWeights> tried;
     for (const TrialWeights& w : kTrials)
-        if ((w.featuresPriced && !w.keepSmoothJoins) ||
-            (target <= kFeaturesAtCostShare * input.fn + 0.5 && (target > 0 || !w.keepSmoothJoins)))
-            tried.push_back(w);  // smooth joins only toward a target the shape guards relax for (> 0)
+        if (trialRunsAt(w, target, input.fn))
+            tried.push_back(w);
     std::vector<WeightTrial> trials;
     const int count = int(tried.size());
     for (int k = 0; k < count; ++k) {
         const SimplifyParams p = trialParams(params, tried[k]);
         WeightTrial t;
         t.weights = tried[k];
-        t.weight = p.largeFaceWeight;
-        t.featurePenalty = p.featurePenalty;
         if (progress)
-            progress(100 * k / (count + 1),
-                     detail::describeWeights("Trying plane weight", t, params.featurePenalty).c_str());
+            progress(100 * k / (count + 1), detail::describeWeights("Trying plane weight", params, t.weights).c_str());
         CoreMesh trial;
         detail::copyForTrial(trial, m);
         const SimplifyStats s = simplifyCopy(trial, p);

@@ -1,7 +1,8 @@
 // Weight trials (weight_trials.h): a small mesh with a face target is simplified on copies
-// with the large-face weight times 1, 10 and 40, and times 200 with features at their
-// quadric cost, each result measured against the input, and the weights of the closest are
-// used on the mesh itself.
+// with the large-face weight times 1, 10 and 40, times 200 with features at their quadric
+// cost (with their constraint planes and without), keeping smooth joins, and with the
+// constraint planes loosened, each result measured against the input, and the weights of
+// the closest are used on the mesh itself.
 #include "cad_meshes.h"
 #include "simplify_test_util.h"
 #include "test_mesh.h"
@@ -133,9 +134,9 @@ TEST(WeightTrials, NeverFartherThanTheDefaultWeight)
 // slivers (over the fewest plus one point) count one best distance per five points.
 TEST(WeightTrials, TheClosestTrialWinsUnlessItMakesSlivers)
 {
-    // weight, distance, slivers, shading deviation, reached
+    // weights, distance, slivers, shading deviation, reached
     std::vector<WeightTrial> t = {
-        {0.005, 3.0, 0.02, 0.0, true}, {0.05, 2.0, 0.02, 0.0, true}, {0.2, 4.0, 0.02, 0.0, true}};
+        {{}, 3.0, 0.02, 0.0, true}, {{}, 2.0, 0.02, 0.0, true}, {{}, 4.0, 0.02, 0.0, true}};
     EXPECT_EQ(closestTrial(t), 1u);
     t[1].slivers = 0.12;  // 10 points more: 1 + 1.8 against 1.5
     EXPECT_EQ(closestTrial(t), 0u);
@@ -153,7 +154,7 @@ TEST(WeightTrials, TheClosestTrialWinsUnlessItMakesSlivers)
 // input over far more of its surface wins; below the floor, shading cannot tell trials apart.
 TEST(WeightTrials, ShadingCountsBesideDistance)
 {
-    std::vector<WeightTrial> t = {{0.005, 2.2, 0.02, 0.06, true}, {0.05, 2.0, 0.02, 0.12, true}};
+    std::vector<WeightTrial> t = {{{}, 2.2, 0.02, 0.06, true}, {{}, 2.0, 0.02, 0.12, true}};
     EXPECT_EQ(closestTrial(t), 0u);  // 1.1 + 0.7 against 1 + 1.4
     t[0].shading = 0.11;             // 1.1 + 0.7 against 1 + 0.7 · 1.09
     EXPECT_EQ(closestTrial(t), 1u);
@@ -166,8 +167,8 @@ TEST(WeightTrials, ShadingCountsBesideDistance)
 // as one more best distance against it.
 TEST(WeightTrials, ATurnedFaceCountsAsMuchAsTheBestDistance)
 {
-    std::vector<WeightTrial> t = {{0.005, 3.0, 0.02, 0.0, true}, {0.05, 2.0, 0.02, 0.0, true},
-                                  {0.2, 2.5, 0.02, 0.0, true}};
+    std::vector<WeightTrial> t = {{{}, 3.0, 0.02, 0.0, true}, {{}, 2.0, 0.02, 0.0, true},
+                                  {{}, 2.5, 0.02, 0.0, true}};
     t[1].turned = 2;
     EXPECT_EQ(closestTrial(t), 2u);
     t[2].turned = 1;
@@ -177,7 +178,7 @@ TEST(WeightTrials, ATurnedFaceCountsAsMuchAsTheBestDistance)
     t[2].reached = false;  // short of its target: the fewest among those that reached it
     EXPECT_EQ(closestTrial(t), 1u);
     // One face more for a third of the distance: 1 + 0.7 + 1 against 3 + 0.7.
-    t = {{0.005, 6.0, 0.02, 0.0, true}, {0.05, 2.0, 0.02, 0.0, true}};
+    t = {{{}, 6.0, 0.02, 0.0, true}, {{}, 2.0, 0.02, 0.0, true}};
     t[1].turned = 1;
     EXPECT_EQ(closestTrial(t), 1u);
     t[1].turned = 3;
@@ -210,6 +211,63 @@ TEST(WeightTrials, TheHeaviestTrialPricesFeaturesAtTheirCost)
     EXPECT_EQ(facingPenaltyOf(trialParams(caller, last)), 0.0);
 }
 
+// Features at their cost are tried without their constraint planes too (boundaryWeight 0):
+// with them, a lead's creases hold its bends in place at the price of the whole chip's
+// outline; without them, the leads' creases cost what their faces' planes say. On the chip
+// at 95 % that run is far closer to the input, and the trials keep it.
+TEST(WeightTrials, FeaturesAtCostAreTriedWithoutTheirConstraintPlanes)
+{
+    auto featuresAtCost = [](double planes) {
+        return std::find_if(std::begin(kTrials), std::end(kTrials), [&](const TrialWeights& w) {
+            return !w.featuresPriced && w.constraintPlanes == planes;
+        });
+    };
+    ASSERT_NE(featuresAtCost(1.0), std::end(kTrials));
+    ASSERT_NE(featuresAtCost(0.0), std::end(kTrials));
+    SimplifyParams caller;
+    caller.reductionPerc = 95;
+    const SimplifyParams held = trialParams(caller, *featuresAtCost(1.0));
+    const SimplifyParams free = trialParams(caller, *featuresAtCost(0.0));
+    EXPECT_EQ(held.boundaryWeight, caller.boundaryWeight);
+    EXPECT_EQ(free.boundaryWeight, 0.0);
+    EXPECT_EQ(free.featurePenalty, 1.0);
+    EXPECT_EQ(free.largeFaceWeight, held.largeFaceWeight);
+
+    auto distanceWith = [](const SimplifyParams& p) {
+        TestMesh input, m;
+        buildInputAndCopy(chip, input, m);
+        const SimplifyStats s = simplify(m, p);
+        EXPECT_TRUE(s.ok) << s.message;
+        EXPECT_LE(m.fn, s.targetFaces);
+        const double forward = oneSidedHausdorff(input, m, 100000, 1).max;
+        const double backward = oneSidedHausdorff(m, input, 100000, 2).max;
+        return std::max(forward, backward) / liveDiagonal(input);
+    };
+    EXPECT_LT(distanceWith(free), 0.8 * distanceWith(held));
+    const Outcome with = reduce(chip, 95, true);
+    EXPECT_NE(with.stats.weightTrials.find("kept 1 with feature penalty 1, constraint planes x 0"), std::string::npos)
+        << with.stats.weightTrials;
+}
+
+// One trial runs the caller's weights with the constraint planes at a fraction of their
+// weight, at every target (where a crease vertex leaving its curved crease makes fewer
+// slivers); the log names it.
+TEST(WeightTrials, OneTrialLoosensTheConstraintPlanesAtEveryTarget)
+{
+    const auto loosened = std::find_if(std::begin(kTrials), std::end(kTrials), [](const TrialWeights& w) {
+        return w.featuresPriced && w.constraintPlanes > 0 && w.constraintPlanes < 1;
+    });
+    ASSERT_NE(loosened, std::end(kTrials));
+    EXPECT_TRUE(trialRunsAt(*loosened, 500, 1000));
+    SimplifyParams caller;
+    caller.boundaryWeight = 2;
+    EXPECT_EQ(trialParams(caller, *loosened).boundaryWeight, 2 * loosened->constraintPlanes);
+    EXPECT_EQ(trialParams(caller, *loosened).featurePenalty, caller.featurePenalty);
+    const Outcome half = reduce(board, 50, true);
+    EXPECT_NE(half.stats.weightTrials.find(", constraint planes x 0.25 ("), std::string::npos)
+        << half.stats.weightTrials;
+}
+
 // One trial keeps smooth joins (SimplifyParams::keepSmoothJoins, test_smooth_joins.cpp), the
 // others leave it to the caller; like the features-at-cost trial it runs only where the
 // target leaves at most a tenth of the faces, and the log names it.
@@ -221,6 +279,11 @@ TEST(WeightTrials, OneTrialKeepsSmoothJoinsAtFarTargets)
     SimplifyParams caller;
     for (const TrialWeights& w : kTrials)
         EXPECT_EQ(trialParams(caller, w).keepSmoothJoins, w.keepSmoothJoins);
+    const TrialWeights joins{10.0, true, true};
+    EXPECT_TRUE(trialRunsAt(joins, 100, 1000));
+    EXPECT_FALSE(trialRunsAt(joins, 500, 1000));
+    EXPECT_FALSE(trialRunsAt(joins, 0, 1000));  // the shape guards relax only toward a face target
+    EXPECT_TRUE(trialRunsAt(TrialWeights{200.0, false}, 0, 1000));
     for (double percent : {50.0, 90.0}) {
         TestMesh m;
         makeShaft(m, 48);
