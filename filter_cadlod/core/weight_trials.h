@@ -55,8 +55,13 @@ struct TrialWeights {
 // place on a curved crease where that makes fewer slivers, judged like the others by how
 // close the result stays (docs/benchmarks.md, issue 14's "Constraint planes in the trials").
 inline constexpr TrialWeights kTrials[] = {
-    {1.0, true, false},         {10.0, true, false},        {40.0, true, false}, {200.0, false, false},
-    {10.0, true, true},         {200.0, false, false, 0.0}, {1.0, true, false, 0.25}};
+    {1.0, true, false},          // the caller's weights
+    {10.0, true, false},         // heavier planes
+    {40.0, true, false},         // heavier planes
+    {200.0, false, false},       // features at their cost
+    {10.0, true, true},          // keeping smooth joins
+    {200.0, false, false, 0.0},  // features at their cost, no constraint planes
+    {1.0, true, false, 0.25}};   // the constraint planes at a quarter
 // Features go at their cost, and smooth joins are kept, only where the target leaves at most
 // this share of the faces: there, keeping every crease takes the faces the large surfaces
 // need; above it, a feature keeps its price (a tube's rim stays on its polyline at 75 %). The
@@ -258,8 +263,8 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
         surface.emplace(input, liveDiagonal(input));
     std::vector<TrialWeights> tried;
     for (const TrialWeights& w : kTrials)
-        if (trialRunsAt(w, target, input.fn))
-            tried.push_back(w);
+        if (trialRunsAt(w, target, input.fn) && (w.constraintPlanes == 1.0 || params.boundaryWeight > 0))
+            tried.push_back(w);  // without constraint planes to weigh, varying them repeats another trial
     std::vector<WeightTrial> trials;
     const int count = int(tried.size());
     for (int k = 0; k < count; ++k) {

@@ -266,6 +266,15 @@ TEST(WeightTrials, OneTrialLoosensTheConstraintPlanesAtEveryTarget)
     const Outcome half = reduce(board, 50, true);
     EXPECT_NE(half.stats.weightTrials.find(", constraint planes x 0.25 ("), std::string::npos)
         << half.stats.weightTrials;
+    // Without constraint planes (boundary weight 0) there is nothing to loosen: not tried.
+    TestMesh input, m;
+    buildInputAndCopy(board, input, m);
+    SimplifyParams none;
+    none.reductionPerc = 50;
+    none.boundaryWeight = 0;
+    const SimplifyStats s = simplify(m, none);
+    EXPECT_FALSE(s.weightTrials.empty());
+    EXPECT_EQ(s.weightTrials.find("constraint planes"), std::string::npos) << s.weightTrials;
 }
 
 // One trial keeps smooth joins (SimplifyParams::keepSmoothJoins, test_smooth_joins.cpp), the
