@@ -71,7 +71,8 @@ struct SimplifyParams {
     double shadingAngle = 12.0;      // degrees
     // With the shape guards: no placement may fold two faces around the new vertex past the
     // angle normals are split at (CreaseFans::kCreaseDegrees: VRML's creaseAngle, the
-    // OpenFlight export's smooth fans) where they met below it before and in the input. A
+    // OpenFlight export's smooth fans) where they met below it before the collapse (or did not
+    // meet: faces around the two endpoints, joined across a removed face). A
     // coarse fillet folded into two or three facets is drawn flat-shaded, band by band, where
     // its strips were smooth. Off by default: it costs distance on parts whose small details
     // go instead; the weight trials try it at far reductions (weight_trials.h).

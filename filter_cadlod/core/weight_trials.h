@@ -116,12 +116,16 @@ inline SimplifyParams trialParams(const SimplifyParams& caller, const TrialWeigh
     return p;
 }
 
-// Whether a trial runs toward `target` faces of an input of `faces`: the plane weights with
-// the caller's feature price always; features at their cost and smooth joins only where the
-// target leaves at most kFeaturesAtCostShare of the faces, and smooth joins only toward a
-// target above 0 (the shape guards they are one of relax only toward a face target).
-inline bool trialRunsAt(const TrialWeights& w, int target, int faces)
+// Whether a trial runs for `caller` toward `target` faces of an input of `faces`: the plane
+// weights with the caller's feature price always; features at their cost and smooth joins
+// only where the target leaves at most kFeaturesAtCostShare of the faces, and smooth joins
+// only toward a target above 0 (the shape guards they are one of relax only toward a face
+// target). Without constraint planes to weigh (boundaryWeight 0), a trial that varies them
+// would repeat another.
+inline bool trialRunsAt(const TrialWeights& w, const SimplifyParams& caller, int target, int faces)
 {
+    if (w.constraintPlanes != 1.0 && caller.boundaryWeight <= 0)
+        return false;
     const bool farTarget = target <= kFeaturesAtCostShare * faces + 0.5;
     if (w.keepSmoothJoins)
         return farTarget && target > 0;
@@ -263,8 +267,8 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
         surface.emplace(input, liveDiagonal(input));
     std::vector<TrialWeights> tried;
     for (const TrialWeights& w : kTrials)
-        if (trialRunsAt(w, target, input.fn) && (w.constraintPlanes == 1.0 || params.boundaryWeight > 0))
-            tried.push_back(w);  // without constraint planes to weigh, varying them repeats another trial
+        if (trialRunsAt(w, params, target, input.fn))
+            tried.push_back(w);
     std::vector<WeightTrial> trials;
     const int count = int(tried.size());
     for (int k = 0; k < count; ++k) {

@@ -258,7 +258,11 @@ TEST(WeightTrials, OneTrialLoosensTheConstraintPlanesAtEveryTarget)
         return w.featuresPriced && w.constraintPlanes > 0 && w.constraintPlanes < 1;
     });
     ASSERT_NE(loosened, std::end(kTrials));
-    EXPECT_TRUE(trialRunsAt(*loosened, 500, 1000));
+    EXPECT_TRUE(trialRunsAt(*loosened, SimplifyParams{}, 500, 1000));
+    SimplifyParams withoutPlanes;
+    withoutPlanes.boundaryWeight = 0;
+    EXPECT_FALSE(trialRunsAt(*loosened, withoutPlanes, 500, 1000));
+    EXPECT_TRUE(trialRunsAt(kTrials[0], withoutPlanes, 500, 1000));
     SimplifyParams caller;
     caller.boundaryWeight = 2;
     EXPECT_EQ(trialParams(caller, *loosened).boundaryWeight, 2 * loosened->constraintPlanes);
@@ -289,10 +293,10 @@ TEST(WeightTrials, OneTrialKeepsSmoothJoinsAtFarTargets)
     for (const TrialWeights& w : kTrials)
         EXPECT_EQ(trialParams(caller, w).keepSmoothJoins, w.keepSmoothJoins);
     const TrialWeights joins{10.0, true, true};
-    EXPECT_TRUE(trialRunsAt(joins, 100, 1000));
-    EXPECT_FALSE(trialRunsAt(joins, 500, 1000));
-    EXPECT_FALSE(trialRunsAt(joins, 0, 1000));  // the shape guards relax only toward a face target
-    EXPECT_TRUE(trialRunsAt(TrialWeights{200.0, false}, 0, 1000));
+    EXPECT_TRUE(trialRunsAt(joins, caller, 100, 1000));
+    EXPECT_FALSE(trialRunsAt(joins, caller, 500, 1000));
+    EXPECT_FALSE(trialRunsAt(joins, caller, 0, 1000));  // the shape guards relax only toward a face target
+    EXPECT_TRUE(trialRunsAt(TrialWeights{200.0, false}, caller, 0, 1000));
     for (double percent : {50.0, 90.0}) {
         TestMesh m;
         makeShaft(m, 48);
