@@ -35,12 +35,14 @@ public:
         parent_.resize(corners);
         std::iota(parent_.begin(), parent_.end(), 0u);
         joinAcrossSmoothEdges(m, std::cos(creaseDegrees * M_PI / 180.0));
+        pointEveryCornerAtItsRoot();
         sumFanNormals(m);
         countFansPerVertex(m);
     }
 
-    // The fan of corner k of face f (an id shared by the corners of one fan).
-    std::uint32_t fanOf(std::size_t face, int k) const { return root(std::uint32_t(3 * face + k)); }
+    // The fan of corner k of face f (an id shared by the corners of one fan). Only reads:
+    // threads may share the fans (the simplifier's weight trials run two at a time).
+    std::uint32_t fanOf(std::size_t face, int k) const { return parent_[3 * face + std::size_t(k)]; }
     // The fan's unit normal (zero where its faces have no area).
     vcg::Point3f normal(std::uint32_t fan) const { return fanNormal_[fan]; }
     // Whether the vertex has more than one fan: it sits on a crease.
@@ -53,13 +55,19 @@ private:
         return !f.IsD() && f.cV(0) != f.cV(1) && f.cV(1) != f.cV(2) && f.cV(0) != f.cV(2);
     }
 
-    std::uint32_t root(std::uint32_t x) const
+    std::uint32_t root(std::uint32_t x)
     {
         while (parent_[x] != x) {
             parent_[x] = parent_[parent_[x]];  // path halving
             x = parent_[x];
         }
         return x;
+    }
+    // Once the fans are joined: every corner's parent is its fan's id.
+    void pointEveryCornerAtItsRoot()
+    {
+        for (std::uint32_t x = 0; x < std::uint32_t(parent_.size()); ++x)
+            parent_[x] = root(x);
     }
     void unite(std::uint32_t a, std::uint32_t b)
     {
@@ -156,7 +164,7 @@ private:
         }
     }
 
-    mutable std::vector<std::uint32_t> parent_;  // per corner (3 × face index + k): union-find
+    std::vector<std::uint32_t> parent_;  // per corner (3 × face index + k): union-find
     std::vector<vcg::Point3f> fanNormal_;  // per fan root
     std::vector<std::uint8_t> fans_;     // per vertex: 0, 1 or 2 (two or more)
 };
