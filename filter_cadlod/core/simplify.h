@@ -418,13 +418,24 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
 template <class MeshType>
 SimplifyStats simplifyWith(MeshType& m, const SimplifyParams& params, SimplifyStats stats,
                            std::chrono::steady_clock::time_point start, vcg::CallBackPos* progress,
-                           const RunTogether& together);
+                           const RunTogether& together, const FeatureBits* sharedBits);
 
-// Simplifies `m` in place. `progress` may be null. `together` runs the two halves of a large
-// mesh (collapse_halves.h) at once, or one after the other (the result is the same).
+namespace detail {
+
+// vcglib's bit flags of one mesh type, taken for a scope and given back at its end.
 template <class MeshType>
-SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackPos* progress = nullptr,
-                       const RunTogether& together = runInSequence)
+struct TakenFeatureBits {
+    FeatureBits bits = takeFeatureBits<MeshType>();
+    TakenFeatureBits() = default;
+    TakenFeatureBits(const TakenFeatureBits&) = delete;
+    TakenFeatureBits& operator=(const TakenFeatureBits&) = delete;
+    ~TakenFeatureBits() { giveBackFeatureBits<MeshType>(bits); }
+};
+
+// simplify(), its collapses marking features with `sharedBits` (null: bits of its own).
+template <class MeshType>
+SimplifyStats simplifySharing(MeshType& m, const SimplifyParams& params, vcg::CallBackPos* progress,
+                              const RunTogether& together, const FeatureBits* sharedBits)
 {
     const auto start = std::chrono::steady_clock::now();
 
@@ -451,29 +462,47 @@ SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackP
 
     SimplifyParams chosen = params;
     if (weightTrialsApply(m, params)) {
+        // The trials run two at a time on copies (`together`); vcglib's pool of bit flags is
+        // one per mesh type and process, so the copies share one set taken here.
+        const TakenFeatureBits<CoreMesh> trialBits;
         const std::vector<WeightTrial> trials = runWeightTrials(
-            m, params, [&](CoreMesh& copy, const SimplifyParams& p) { return simplify(copy, p, nullptr, together); },
-            progress);
+            m, params,
+            [&](CoreMesh& copy, const SimplifyParams& p) {
+                return simplifySharing(copy, p, nullptr, runInSequence, &trialBits.bits);
+            },
+            progress, together);
         const std::size_t best = closestTrial(trials);
         if (best < trials.size())
             chosen = trialParams(params, trials[best].weights);
         stats.weightTrials = detail::describeTrials(trials, best, liveDiagonal(m), params);
     }
-    return simplifyWith(m, chosen, stats, start, progress, together);
+    return simplifyWith(m, chosen, stats, start, progress, together, sharedBits);
+}
+
+}  // namespace detail
+
+// Simplifies `m` in place. `progress` may be null. `together` runs two tasks at once, or
+// one after the other (the result is the same): the two halves of a large mesh
+// (collapse_halves.h), the weight trials of a small one (weight_trials.h).
+template <class MeshType>
+SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackPos* progress = nullptr,
+                       const RunTogether& together = runInSequence)
+{
+    return detail::simplifySharing(m, params, progress, together, nullptr);
 }
 
 // simplify() once the plane weight is chosen.
 template <class MeshType>
 SimplifyStats simplifyWith(MeshType& m, const SimplifyParams& params, SimplifyStats stats,
                            std::chrono::steady_clock::time_point start, vcg::CallBackPos* progress,
-                           const RunTogether& together)
+                           const RunTogether& together, const FeatureBits* sharedBits)
 {
     using VertexType = typename MeshType::VertexType;
     // An edge of three faces or more would hold its vertices for good (feature_edges.h), and
     // a target would be reached by removing whole parts instead: it is cut apart first.
     cutNonManifoldEdges(m, params, stats);
     CollapseContext<MeshType> ctx;
-    if (prepareCollapse(m, params, ctx, stats)) {
+    if (prepareCollapse(m, params, ctx, stats, sharedBits)) {
         std::vector<VertexType*> frozen;
         if (params.selectedOnly)
             frozen = detail::freezeUnselected(m);

@@ -14,6 +14,7 @@
 #include "hausdorff.h"
 #include "input_surface.h"
 #include "layer_metadata.h"
+#include "run_together.h"
 #include "shading_deviation.h"
 #include "simplify_params.h"
 
@@ -248,10 +249,12 @@ inline std::string describeTrials(const std::vector<WeightTrial>& trials, std::s
 }  // namespace detail
 
 // Simplifies copies of `m` once per weight with `simplifyCopy(copy, params)` and returns
-// the trials, measured against `m` (unchanged). `progress` (may be null) is told of each.
+// the trials, measured against `m` (unchanged). `together` runs two trials at once (each
+// on its own copy; the measures of the input are only read), or one after the other.
+// `progress` (may be null) is told of each pair, from the calling thread.
 template <class MeshType, class SimplifyCopy>
 std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& params, const SimplifyCopy& simplifyCopy,
-                                         vcg::CallBackPos* progress)
+                                         vcg::CallBackPos* progress, const RunTogether& together = runInSequence)
 {
     CoreMesh input;
     detail::copyForTrial(input, m);
@@ -265,21 +268,16 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
     std::optional<InputSurface> surface;
     if (target >= kFacingFarField * input.fn)
         surface.emplace(input, liveDiagonal(input));
-    std::vector<TrialWeights> tried;
+    std::vector<WeightTrial> trials;
     for (const TrialWeights& w : kTrials)
         if (trialRunsAt(w, params, target, input.fn))
-            tried.push_back(w);
-    std::vector<WeightTrial> trials;
-    const int count = int(tried.size());
-    for (int k = 0; k < count; ++k) {
-        const SimplifyParams p = trialParams(params, tried[k]);
-        WeightTrial t;
-        t.weights = tried[k];
-        if (progress)
-            progress(100 * k / (count + 1), detail::describeWeights("Trying plane weight", params, t.weights).c_str());
-        CoreMesh trial;
-        detail::copyForTrial(trial, m);
-        const SimplifyStats s = simplifyCopy(trial, p);
+            trials.push_back({w});
+    // The copies are made before the trials run: `m` is read from one thread only.
+    std::vector<CoreMesh> copies(trials.size());
+    auto run = [&](std::size_t k) {
+        WeightTrial& t = trials[k];
+        CoreMesh& trial = copies[k];
+        const SimplifyStats s = simplifyCopy(trial, trialParams(params, t.weights));
         t.reached = s.ok && trial.fn <= s.targetFaces;
         const detail::ClosestFace<CoreMesh> toTrial(trial);
         const double forward = distancesToSurface(onInput, toTrial).max;
@@ -288,7 +286,20 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
         t.slivers = meshCompactness(trial).shareBelow01;
         t.shading = shadingDeviation(shadingInput, trial, toTrial).share();
         t.turned = surface ? surface->turnedFaces(trial) : 0;
-        trials.push_back(t);
+        trial.Clear();
+    };
+    const std::size_t count = trials.size();
+    for (std::size_t k = 0; k < count; k += 2) {
+        if (progress)
+            progress(int(100 * k / (count + 1)),
+                     detail::describeWeights("Trying plane weight", params, trials[k].weights).c_str());
+        detail::copyForTrial(copies[k], m);
+        if (k + 1 < count) {
+            detail::copyForTrial(copies[k + 1], m);
+            together([&] { run(k + 1); }, [&] { run(k); });
+        } else {
+            run(k);
+        }
     }
     return trials;
 }

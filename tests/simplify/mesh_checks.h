@@ -8,6 +8,7 @@
 #include <vcg/space/index/grid_static_ptr.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -96,6 +97,53 @@ int foldedFaces(MeshResult& result, MeshOriginal& original, double limitDeg = 90
             ++folded;
     }
     return folded;
+}
+
+// The mesh as vertex positions and faces by vertex index, live elements only.
+struct Snapshot {
+    std::vector<vcg::Point3f> points;
+    std::vector<std::array<int, 3>> faces;
+    bool operator==(const Snapshot& o) const { return points == o.points && faces == o.faces; }
+};
+
+template <class MeshType>
+Snapshot snapshot(const MeshType& m)
+{
+    Snapshot s;
+    std::vector<int> index(m.vert.size(), -1);
+    for (std::size_t i = 0; i < m.vert.size(); ++i)
+        if (!m.vert[i].IsD()) {
+            index[i] = int(s.points.size());
+            s.points.push_back(vcg::Point3f::Construct(m.vert[i].cP()));
+        }
+    for (const auto& f : m.face)
+        if (!f.IsD())
+            s.faces.push_back({index[std::size_t(f.cV(0) - &m.vert[0])], index[std::size_t(f.cV(1) - &m.vert[0])],
+                               index[std::size_t(f.cV(2) - &m.vert[0])]});
+    return s;
+}
+
+// Every live face's vertices point back at it through their VF lists, and the lists hold
+// live faces only.
+template <class MeshType>
+bool vfAdjacencyConsistent(MeshType& m)
+{
+    using FaceType = typename MeshType::FaceType;
+    for (auto& f : m.face) {
+        if (f.IsD())
+            continue;
+        for (int j = 0; j < 3; ++j) {
+            bool found = false;
+            for (vcg::face::VFIterator<FaceType> x(f.V(j)); !x.End(); ++x) {
+                if (x.F()->IsD())
+                    return false;
+                found |= x.F() == &f && x.I() == j;
+            }
+            if (!found)
+                return false;
+        }
+    }
+    return true;
 }
 
 }  // namespace cadlod::test
