@@ -38,12 +38,14 @@ namespace cadlod {
 // surface keeps the caller's price either way (facingPenalty). keepSmoothJoins: the trial
 // folds no smooth join past the crease angle (SimplifyParams::keepSmoothJoins).
 // constraintPlanes: the weight of the planes that hold creases and boundaries in place, as a
-// multiple of the caller's boundaryWeight.
+// multiple of the caller's boundaryWeight. shapeGuard: the caller's minCompactness; off, a
+// collapse may make a sliver (SimplifyParams::minCompactness 0).
 struct TrialWeights {
     double plane = 1.0;
     bool featuresPriced = true;
     bool keepSmoothJoins = false;
     double constraintPlanes = 1.0;
+    bool shapeGuard = true;
 };
 // The trials, the caller's own weights first. The heaviest plane weight runs with features
 // at their quadric cost, once with their constraint planes and once without: a part whose
@@ -51,10 +53,11 @@ struct TrialWeights {
 // creased details for them, and without the planes a detail's crease costs no more than the
 // faces it bends (a chip's leads, a board's parts at 95 %). One keeps smooth joins: a part
 // whose fillets a viewer sees around its outline (a transformer's bobbin, a pump cover) keeps
-// them drawn round and gives up distance elsewhere. The last runs the caller's weights with
-// the constraint planes at a quarter, at every target: a crease vertex may then leave its
-// place on a curved crease where that makes fewer slivers, judged like the others by how
-// close the result stays (docs/benchmarks.md, issue 14's "Constraint planes in the trials").
+// them drawn round and gives up distance elsewhere. One runs the caller's weights with the
+// constraint planes at a quarter, at every target: a crease vertex may then leave its place
+// on a curved crease where that makes fewer slivers, judged like the others by how close the
+// result stays (docs/benchmarks.md, issue 14's "Constraint planes in the trials"). The last
+// runs them without the shape guard, at near targets (kUnguardedTrialShare).
 inline constexpr TrialWeights kTrials[] = {
     {1.0, true, false},          // the caller's weights
     {10.0, true, false},         // heavier planes
@@ -62,12 +65,20 @@ inline constexpr TrialWeights kTrials[] = {
     {200.0, false, false},       // features at their cost
     {10.0, true, true},          // keeping smooth joins
     {200.0, false, false, 0.0},  // features at their cost, no constraint planes
-    {1.0, true, false, 0.25}};   // the constraint planes at a quarter
+    {1.0, true, false, 0.25},    // the constraint planes at a quarter
+    {1.0, true, false, 1.0, false}};  // no shape guard (near targets only)
 // Features go at their cost, and smooth joins are kept, only where the target leaves at most
 // this share of the faces: there, keeping every crease takes the faces the large surfaces
 // need; above it, a feature keeps its price (a tube's rim stays on its polyline at 75 %). The
 // far reductions are where coarse fillets fold, and each trial costs a run.
 inline constexpr double kFeaturesAtCostShare = 0.1;
+// The trial without the shape guard runs only where the target leaves at least this share of
+// the faces. There the collapses coarsen the input's own strips of slivers (a chip lead's
+// bend, a bottle's fillets), which the guard would keep: without it the result is often
+// closer and has fewer slivers. Farther down the guard is what keeps the faces compact, and
+// the trials' pick, judging slivers only beyond a margin, took the unguarded result where it
+// cost slivers (docs/benchmarks.md, "The shape guard in the trials").
+inline constexpr double kUnguardedTrialShare = 0.5;
 // A sliver share more than this above the lowest of the trials counts against a trial, as
 // one more "best distance" per kTrialSliverStep beyond it: a heavier weight may buy its
 // distance with slivers, and that is not closer to the input.
@@ -111,6 +122,8 @@ inline SimplifyParams trialParams(const SimplifyParams& caller, const TrialWeigh
     p.facingPenalty = facingPenaltyOf(caller);
     p.keepSmoothJoins = caller.keepSmoothJoins || w.keepSmoothJoins;
     p.boundaryWeight = caller.boundaryWeight * w.constraintPlanes;
+    if (!w.shapeGuard)
+        p.minCompactness = 0.0;
     if (!w.featuresPriced && caller.featurePenalty > 0)
         p.featurePenalty = std::min(caller.featurePenalty, 1.0);
     p.weightTrialsMaxFaces = 0;
@@ -127,6 +140,8 @@ inline bool trialRunsAt(const TrialWeights& w, const SimplifyParams& caller, int
 {
     if (w.constraintPlanes != 1.0 && caller.boundaryWeight <= 0)
         return false;
+    if (!w.shapeGuard)
+        return caller.minCompactness > 0 && target >= kUnguardedTrialShare * faces - 0.5;
     const bool farTarget = target <= kFeaturesAtCostShare * faces + 0.5;
     if (w.keepSmoothJoins)
         return farTarget && target > 0;
@@ -226,7 +241,9 @@ inline std::string describeWeights(const char* what, const SimplifyParams& calle
     if (p.boundaryWeight != caller.boundaryWeight)
         n += std::snprintf(text + n, sizeof text - std::size_t(n), ", constraint planes x %.4g", w.constraintPlanes);
     if (w.keepSmoothJoins)
-        std::snprintf(text + n, sizeof text - std::size_t(n), " keeping smooth joins");
+        n += std::snprintf(text + n, sizeof text - std::size_t(n), " keeping smooth joins");
+    if (p.minCompactness != caller.minCompactness)
+        std::snprintf(text + n, sizeof text - std::size_t(n), ", no shape guard");
     return text;
 }
 

@@ -281,6 +281,41 @@ TEST(WeightTrials, OneTrialLoosensTheConstraintPlanesAtEveryTarget)
     EXPECT_EQ(s.weightTrials.find("constraint planes"), std::string::npos) << s.weightTrials;
 }
 
+// One trial runs without the shape guard (SimplifyParams::minCompactness 0) where the target
+// leaves at least half of the faces: on strips of slivers (a lead's bend) the guard refuses
+// the collapses that would coarsen them. Not tried when the caller has no guard to drop.
+TEST(WeightTrials, OneTrialRunsWithoutTheShapeGuard)
+{
+    const auto unguarded = std::find_if(std::begin(kTrials), std::end(kTrials),
+                                        [](const TrialWeights& w) { return !w.shapeGuard; });
+    ASSERT_NE(unguarded, std::end(kTrials));
+    SimplifyParams caller;
+    EXPECT_TRUE(trialRunsAt(*unguarded, caller, 500, 1000));
+    EXPECT_FALSE(trialRunsAt(*unguarded, caller, 499, 1000));
+    EXPECT_FALSE(trialRunsAt(*unguarded, caller, 100, 1000));
+    EXPECT_EQ(trialParams(caller, *unguarded).minCompactness, 0.0);
+    EXPECT_EQ(trialParams(caller, kTrials[0]).minCompactness, caller.minCompactness);
+    SimplifyParams unguardedCaller;
+    unguardedCaller.minCompactness = 0;
+    EXPECT_FALSE(trialRunsAt(*unguarded, unguardedCaller, 500, 1000));
+
+    // A board whose parts' rounded edges are strips of long faces: without the guard the
+    // trial at 50 % comes closer, and it is kept.
+    const Outcome unguardedKept = reduce(board, 50, true);
+    const Outcome guarded = reduce(board, 50, false);
+    EXPECT_NE(unguardedKept.stats.weightTrials.find("kept 0.005, no shape guard"), std::string::npos)
+        << unguardedKept.stats.weightTrials;
+    EXPECT_LT(unguardedKept.distance, 0.9 * guarded.distance);
+    TestMesh input, m;
+    buildInputAndCopy(chip, input, m);
+    SimplifyParams none;
+    none.reductionPerc = 50;
+    none.minCompactness = 0;
+    const SimplifyStats s = simplify(m, none);
+    EXPECT_FALSE(s.weightTrials.empty());
+    EXPECT_EQ(s.weightTrials.find("shape guard"), std::string::npos) << s.weightTrials;
+}
+
 // One trial keeps smooth joins (SimplifyParams::keepSmoothJoins, test_smooth_joins.cpp), the
 // others leave it to the caller; like the features-at-cost trial it runs only where the
 // target leaves at most a tenth of the faces, and the log names it.
