@@ -47,7 +47,8 @@ void addProtectionOptions(CLI::App& app, ProtectionArgs& a)
                  "Simplify with the default plane weight only; by default a mesh under 200 000 faces is first "
                  "simplified with three plane weights and once with the crease and boundary constraint planes at a "
                  "quarter (seven runs at 90 % and beyond: the heaviest weight with features at their plain cost, with "
-                 "and without their constraint planes, and one keeping smooth joins) and the one nearest the input "
+                 "and without their constraint planes, and one keeping smooth joins; where at least half of the faces "
+                 "stay, one more without the shape guard), two at a time on two cores, and the one nearest the input "
                  "(distance, shading, slivers, faces turned over) is used");
 }
 
