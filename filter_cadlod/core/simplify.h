@@ -471,7 +471,9 @@ SimplifyStats simplifySharing(MeshType& m, const SimplifyParams& params, vcg::Ca
                 return simplifySharing(copy, p, nullptr, runInSequence, &trialBits.bits);
             },
             progress, together);
-        const std::size_t best = closestTrial(trials);
+        // Distances within the flat tolerance move no plane a viewer could see: the trials'
+        // pick does not tell them apart (an exact result then wins on slivers alone).
+        const std::size_t best = closestTrial(trials, params.flatTolerance * liveDiagonal(m));
         if (best < trials.size())
             chosen = trialParams(params, trials[best].weights);
         stats.weightTrials = detail::describeTrials(trials, best, liveDiagonal(m), params);

@@ -162,8 +162,9 @@ bool weightTrialsApply(const MeshType& m, const SimplifyParams& p)
 // and its shading deviation over the least (kTrialShadingWeight), a trial's excess slivers
 // (kTrialSliverStep) and every face it turns away from the input surface beyond the fewest
 // (kTrialTurnedFaceWeight) counted against it. Trials that stopped above their target are
-// taken only when none reached it.
-inline std::size_t closestTrial(const std::vector<WeightTrial>& trials)
+// taken only when none reached it. Distances below `distanceFloor` (model units) count as
+// that floor: a result a hair from exact is not many times farther than an exact one.
+inline std::size_t closestTrial(const std::vector<WeightTrial>& trials, double distanceFloor = 0.0)
 {
     const bool anyReached = std::any_of(trials.begin(), trials.end(), [](const WeightTrial& t) { return t.reached; });
     auto candidate = [&](const WeightTrial& t) { return t.reached || !anyReached; };
@@ -179,7 +180,8 @@ inline std::size_t closestTrial(const std::vector<WeightTrial>& trials)
             leastShading = std::min(leastShading, t.shading);
         }
     auto score = [&](const WeightTrial& t) {
-        const double distance = leastDistance > 0 ? t.hausdorff / leastDistance : (t.hausdorff > 0 ? 2.0 : 1.0);
+        const double least = std::max(leastDistance, distanceFloor), own = std::max(t.hausdorff, distanceFloor);
+        const double distance = least > 0 ? own / least : (own > 0 ? 2.0 : 1.0);
         const double shading =
             std::max(t.shading, kTrialShadingFloor) / std::max(leastShading, kTrialShadingFloor);
         return distance + kTrialShadingWeight * shading +

@@ -150,6 +150,18 @@ TEST(WeightTrials, TheClosestTrialWinsUnlessItMakesSlivers)
     EXPECT_EQ(closestTrial({}), 0u);
 }
 
+// Below the distance floor (the flat tolerance, in simplify()) distances count alike: a
+// result a hair from exact is not a thousand times farther than an exact one, and slivers
+// decide between them.
+TEST(WeightTrials, DistancesBelowTheFloorCountAlike)
+{
+    std::vector<WeightTrial> t = {{{}, 1e-9, 0.48, 0.0, true}, {{}, 1e-12, 0.56, 0.0, true}};
+    EXPECT_EQ(closestTrial(t), 1u);        // 1000 times closer, without a floor
+    EXPECT_EQ(closestTrial(t, 1e-6), 0u);  // both at the floor: 8 points fewer slivers
+    t[0].hausdorff = 3e-6;                 // 3 floors against 1 + 1.4 for the slivers
+    EXPECT_EQ(closestTrial(t, 1e-6), 1u);
+}
+
 // Shading counts beside distance: a trial a little farther that a viewer sees lit like the
 // input over far more of its surface wins; below the floor, shading cannot tell trials apart.
 TEST(WeightTrials, ShadingCountsBesideDistance)
