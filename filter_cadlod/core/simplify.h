@@ -473,10 +473,11 @@ SimplifyStats simplifySharing(MeshType& m, const SimplifyParams& params, vcg::Ca
             progress, together);
         // Distances within the flat tolerance move no plane a viewer could see: the trials'
         // pick does not tell them apart (an exact result then wins on slivers alone).
-        const std::size_t best = closestTrial(trials, params.flatTolerance * liveDiagonal(m));
+        const double diagonal = liveDiagonal(m);
+        const std::size_t best = closestTrial(trials, params.flatTolerance * diagonal);
         if (best < trials.size())
             chosen = trialParams(params, trials[best].weights);
-        stats.weightTrials = detail::describeTrials(trials, best, liveDiagonal(m), params);
+        stats.weightTrials = detail::describeTrials(trials, best, diagonal, params);
     }
     return simplifyWith(m, chosen, stats, start, progress, together, sharedBits);
 }
