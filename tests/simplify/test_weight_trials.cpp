@@ -49,6 +49,16 @@ Outcome reduce(const std::function<void(CadBuilder&)>& make, double percent, boo
     return o;
 }
 
+// The trials' log line for `make`'s part simplified with `p`.
+std::string trialsLog(const std::function<void(CadBuilder&)>& make, const SimplifyParams& p)
+{
+    TestMesh input, m;
+    buildInputAndCopy(make, input, m);
+    const SimplifyStats s = simplify(m, p);
+    EXPECT_TRUE(s.ok) << s.message;
+    return s.weightTrials;
+}
+
 void chip(CadBuilder& b) { gullWingChip(b, 8); }
 void shaft(CadBuilder& b) { revolve(b, shaftProfile(), shaftSpec(96, 4)); }
 void board(CadBuilder& b) { circuitBoard(b); }
@@ -283,14 +293,12 @@ TEST(WeightTrials, OneTrialLoosensTheConstraintPlanesAtEveryTarget)
     EXPECT_NE(half.stats.weightTrials.find(", constraint planes x 0.25 ("), std::string::npos)
         << half.stats.weightTrials;
     // Without constraint planes (boundary weight 0) there is nothing to loosen: not tried.
-    TestMesh input, m;
-    buildInputAndCopy(board, input, m);
     SimplifyParams none;
     none.reductionPerc = 50;
     none.boundaryWeight = 0;
-    const SimplifyStats s = simplify(m, none);
-    EXPECT_FALSE(s.weightTrials.empty());
-    EXPECT_EQ(s.weightTrials.find("constraint planes"), std::string::npos) << s.weightTrials;
+    const std::string log = trialsLog(board, none);
+    EXPECT_FALSE(log.empty());
+    EXPECT_EQ(log.find("constraint planes"), std::string::npos) << log;
 }
 
 // One trial runs without the shape guard (SimplifyParams::minCompactness 0) where the target
@@ -318,14 +326,12 @@ TEST(WeightTrials, OneTrialRunsWithoutTheShapeGuard)
     EXPECT_NE(unguardedKept.stats.weightTrials.find("kept 0.005, no shape guard"), std::string::npos)
         << unguardedKept.stats.weightTrials;
     EXPECT_LT(unguardedKept.distance, 0.9 * guarded.distance);
-    TestMesh input, m;
-    buildInputAndCopy(chip, input, m);
     SimplifyParams none;
     none.reductionPerc = 50;
     none.minCompactness = 0;
-    const SimplifyStats s = simplify(m, none);
-    EXPECT_FALSE(s.weightTrials.empty());
-    EXPECT_EQ(s.weightTrials.find("shape guard"), std::string::npos) << s.weightTrials;
+    const std::string log = trialsLog(chip, none);
+    EXPECT_FALSE(log.empty());
+    EXPECT_EQ(log.find("shape guard"), std::string::npos) << log;
 }
 
 // One trial keeps smooth joins (SimplifyParams::keepSmoothJoins, test_smooth_joins.cpp), the
