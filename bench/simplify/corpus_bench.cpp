@@ -17,7 +17,7 @@
 //                [--part-borders]          cadlod keeps part borders (keepPartBorders, off by default)
 //                [--feature-penalty X] [--shading-weight X] [--large-face-weight X]
 //                [--tie-tolerance X] [--quality-threshold X] [--shading-angle DEG] [--boundary-weight X]
-//                [--min-compactness X] [--feature-angle DEG] [--candidates N]
+//                [--min-compactness X] [--feature-angle DEG] [--candidates N] [--sliver-count-share X]
 //                                          cadlod's SimplifyParams of those names (tuning sweeps)
 //                [--meshes DIR]            every input and result as PLY (DIR/<part>_input.ply,
 //                                          DIR/<part>_<reduction>_<tool>.ply), to look into a loss
@@ -579,6 +579,7 @@ int main(int argc, char** argv)
         else if (key == "--shading-angle") cadlodParams.shadingAngle = std::stod(value());
         else if (key == "--boundary-weight") cadlodParams.boundaryWeight = std::stod(value());
         else if (key == "--min-compactness") cadlodParams.minCompactness = std::stod(value());
+        else if (key == "--sliver-count-share") cadlodParams.sliverCountShare = std::stod(value());
         else if (key == "--feature-angle") cadlodParams.featureAngle = std::stod(value());
         else if (key == "--candidates") cadlodParams.candidatesPerEdge = std::stoi(value());
         else {

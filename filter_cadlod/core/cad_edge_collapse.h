@@ -185,6 +185,7 @@ struct CollapseContext : public vcg::BaseParameterClass {
     double largestDistance = 0.0; // over operations held to maxDistance (far field)
     double largestFeatureBreak = 0.0;  // largest error of an executed collapse that broke a feature
     bool shapeGuards = true;      // minCompactness and the free-sliver guard apply (relaxed last)
+    bool countsSlivers = false;   // with the shape guards: no collapse adds to the slivers around it
     // Toward a face target: collapses that close a hole or join boundary runs are offered,
     // priced (link_condition.h). A session held to an error ends where they would begin.
     bool joinBoundaries = false;
@@ -727,6 +728,7 @@ private:
         bool v0OnFeature = false, v1OnFeature = false, edgeIsFeature = false;
         bool v0Corner = false, v1Corner = false;  // on other than exactly two feature edges
         double worstCompactness = 1.0;
+        int slivers = 0;  // faces below kSliver, the two the collapse removes included
     };
 
     Neighbourhood gatherRing(Context& ctx, VertexType* v0, VertexType* v1)
@@ -763,8 +765,11 @@ private:
                     addFeatureEnd(b);
                 if (a == other || b == other) {
                     n.edgeIsFeature |= a == other ? featureA : featureB;
-                    if (side == 0)  // shared faces are seen from both sides
-                        n.worstCompactness = std::min(n.worstCompactness, compactness(f->cP(0), f->cP(1), f->cP(2)));
+                    if (side == 0) {  // shared faces are seen from both sides
+                        const double c = compactness(f->cP(0), f->cP(1), f->cP(2));
+                        n.worstCompactness = std::min(n.worstCompactness, c);
+                        n.slivers += c < kSliver;
+                    }
                 } else {
                     const vcg::Point3d pa = vcg::Point3d::Construct(a->cP());
                     const vcg::Point3d pb = vcg::Point3d::Construct(b->cP());
@@ -778,7 +783,9 @@ private:
                         face.side = side;
                     }
                     const double edges = (pa - pv).SquaredNorm() + (pb - pv).SquaredNorm() + face.abSquared;
-                    n.worstCompactness = std::min(n.worstCompactness, compactnessFrom(face.normalLength, edges));
+                    const double c = compactnessFrom(face.normalLength, edges);
+                    n.worstCompactness = std::min(n.worstCompactness, c);
+                    n.slivers += c < kSliver;
                     ctx.ring.push_back(face);
                 }
             }
@@ -829,11 +836,12 @@ private:
     }
 
     // Mean compactness of the faces around the new vertex at p; invalid if one of them would
-    // fall below `floor`, flipped if one turns too far. `failed` is the ring face that made
+    // fall below `floor` or more than `maxSlivers` of them below kSliver, flipped if one turns
+    // too far. `failed` is the ring face that made
     // the last candidate invalid (-1: none): most refused edges are refused by one face for
     // every candidate, so it is tried first. It is set to the face that fails this one.
     PlacementScore score(const Context& ctx, const vcg::Point3d& p, double floor, int& failed,
-                         bool keepsSmoothJoins) const
+                         bool keepsSmoothJoins, int maxSlivers = std::numeric_limits<int>::max()) const
     {
         PlacementScore s;
         if (failed >= 0) {
@@ -843,6 +851,7 @@ private:
                 return s;
         }
         double sum = 0.0;
+        int slivers = 0;
         for (std::size_t i = 0; i < ctx.ring.size(); ++i) {
             const double c = faceAt(ctx, ctx.ring[i], p);
             if (c < floor) {
@@ -851,7 +860,10 @@ private:
                 return s;
             }
             sum += c;
+            slivers += c < kSliver;
         }
+        if (slivers > maxSlivers)
+            return s;
         if (keepsSmoothJoins && foldsSmoothJoin(ctx, p))
             return s;
         s.meanCompactness = sum / double(ctx.ring.size());
@@ -1058,12 +1070,16 @@ private:
         // simplifier relaxes its shape limits (simplify.h), and in the far field of a session
         // held to a distance (an LOD chain's level, drawn where the model is a few dozen pixels
         // high): its distance alone judges it there, and a thin wall around a cavity (a jack's
-        // socket) keeps its opening with long faces across the rim.
+        // socket) keeps its opening with long faces across the rim. Near a face target
+        // (ctx.countsSlivers) a collapse among slivers may not add to their number either: the
+        // floor alone lets it make new ones as long as each beats the worst.
         const double minCompactness = ctx.shapeGuards && !ctx.heldToDistance() ? ctx.params.minCompactness : 0.0;
         const double floor = std::min(minCompactness, n.worstCompactness);
         const double minFree = minCompactness > 0 ? std::max(kSliver, minCompactness) : 0.0;
         const double freeFloor = std::min(minFree, n.worstCompactness);
         auto floorFor = [&](const Candidate& c) { return c.cost <= flatFloor ? freeFloor : floor; };
+        const int maxSlivers =
+            minCompactness > 0 && ctx.countsSlivers ? n.slivers : std::numeric_limits<int>::max();
         const bool keepJoins = ctx.keepsSmoothJoins();
         int best = -1;
         PlacementScore bestScore;
@@ -1072,7 +1088,7 @@ private:
         for (int i = 0; i < count; ++i) {
             if (cand[i].ranked > tieLimit)
                 continue;
-            const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed, keepJoins);
+            const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed, keepJoins, maxSlivers);
             anyFlip |= s.flipped;
             if (s.valid && (best < 0 || s.meanCompactness > bestScore.meanCompactness ||
                             (s.meanCompactness == bestScore.meanCompactness && cand[i].ranked < cand[best].ranked))) {
@@ -1084,7 +1100,7 @@ private:
             for (int i = 0; i < count; ++i) {
                 if (cand[i].ranked <= tieLimit || (best >= 0 && cand[i].ranked >= cand[best].ranked))
                     continue;
-                const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed, keepJoins);
+                const PlacementScore s = score(ctx, cand[i].p, floorFor(cand[i]), failed, keepJoins, maxSlivers);
                 anyFlip |= s.flipped;
                 if (s.valid) {
                     best = i;

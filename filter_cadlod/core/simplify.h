@@ -256,6 +256,7 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     ctx.quadrics.init(m, weights, [&](FaceType& f, int j) { return f.IsUserBit(ctx.bits.edge[j]); });
     ctx.storeInputNormals(m);
     ctx.farFieldFloor = int(kFacingFarField * m.fn);
+    ctx.countsSlivers = stats.targetFaces > 0 && stats.targetFaces >= params.sliverCountShare * m.fn;
     if (params.normalCheck && params.facingCheck) {
         ctx.surface = std::make_shared<InputSurface>(m, ctx.diagonal);
         ctx.facingPenalty = facingPenaltyOf(params);

@@ -53,6 +53,12 @@ struct SimplifyParams {
     double minCompactness = 0.1;     // never create a face below this unless it improves the worst;
                                      // free collapses not below max(0.1, this); 0: no guard
     double qualityThreshold = 0.3;   // free collapses leaving faces below this compactness wait longer
+    // While the face target keeps at least this share of the input's faces, a collapse may not
+    // add to the slivers (compactness < 0.1) around it either, even above the worst of them:
+    // near the input a tessellation's strips of slivers are coarsened, not multiplied. Farther
+    // down faces must grow long to follow curved strips, and the count would turn faces over
+    // (docs/benchmarks.md, "Counting slivers near the target"). Above 1: never.
+    double sliverCountShare = 0.25;
     // Quadric weights: every face weighs about the same (its area capped at 1 % of the mean
     // face area, cad_quadrics.h) plus this share of its full area. The capped weights alone
     // make a plate's large top face count as little as a fillet's sliver: moving a plate corner

@@ -1,0 +1,81 @@
+// The sliver count near a face target (SimplifyParams::sliverCountShare): while the target
+// keeps at least that share of the input's faces, a collapse among slivers may not add to
+// their number. The compactness floor alone (the worst face around the edge) lets it make
+// new slivers as long as each beats the worst, and a tessellation's strips of slivers (a
+// chip lead's bend) multiply instead of being coarsened.
+#include "cad_meshes.h"
+#include "simplify_test_util.h"
+#include "test_mesh.h"
+
+#include "core/compactness.h"
+#include "core/hausdorff.h"
+#include "core/simplify.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <functional>
+
+using namespace cadlod;
+using namespace cadlod::test;
+
+namespace {
+
+struct Result {
+    double slivers = 0.0;   // share of faces with compactness < 0.1
+    double distance = 0.0;  // symmetric Hausdorff distance to the input, % of the diagonal
+    int faces = 0;
+    SimplifyStats stats;
+};
+
+Result reduce(const std::function<void(CadBuilder&)>& make, double percent, double sliverCountShare)
+{
+    TestMesh input, m;
+    buildInputAndCopy(make, input, m);
+    SimplifyParams p;
+    p.reductionPerc = percent;
+    p.weightTrialsMaxFaces = 0;  // the guard itself, not the trials' pick
+    p.sliverCountShare = sliverCountShare;
+    Result r;
+    r.stats = simplify(m, p);
+    EXPECT_TRUE(r.stats.ok) << r.stats.message;
+    r.faces = m.fn;
+    r.slivers = meshCompactness(m).shareBelow01;
+    const double forward = oneSidedHausdorff(input, m, 100000, 1).max;
+    const double backward = oneSidedHausdorff(m, input, 100000, 2).max;
+    r.distance = 100 * std::max(forward, backward) / liveDiagonal(input);
+    return r;
+}
+
+constexpr double kNever = 2.0;  // a share above 1: the count never applies
+
+void board(CadBuilder& b) { circuitBoard(b); }
+
+}  // namespace
+
+// The circuit board: its plate's sides are strips of slivers, and its parts stand on it. Near
+// the target the count keeps the slivers from multiplying there, for a distance within a few
+// percent of the run without it.
+TEST(SliverCount, NearTheTargetTheBoardKeepsFewerSlivers)
+{
+    for (double percent : {50.0, 75.0}) {
+        SCOPED_TRACE(percent);
+        const Result counted = reduce(board, percent, 0.25), uncounted = reduce(board, percent, kNever);
+        EXPECT_EQ(counted.faces, uncounted.faces);
+        EXPECT_GT(uncounted.slivers, 0.01);
+        EXPECT_LT(counted.slivers, 0.7 * uncounted.slivers);
+        EXPECT_LT(counted.distance, 1.1 * uncounted.distance);
+    }
+}
+
+// Below the share (90 % keeps a tenth of the faces) the count does not apply: the same run.
+TEST(SliverCount, FartherDownItDoesNotApply)
+{
+    const Result counted = reduce(board, 90, 0.25), uncounted = reduce(board, 90, kNever);
+    EXPECT_EQ(counted.faces, uncounted.faces);
+    EXPECT_EQ(counted.slivers, uncounted.slivers);
+    EXPECT_EQ(counted.distance, uncounted.distance);
+    // A share of 0 counts at every target: the 90 % run changes.
+    const Result always = reduce(board, 90, 0.0);
+    EXPECT_NE(always.distance, uncounted.distance);
+}
