@@ -9,12 +9,10 @@
 #include "test_mesh.h"
 
 #include "core/compactness.h"
-#include "core/hausdorff.h"
 #include "core/simplify.h"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <functional>
 #include <utility>
 
@@ -43,9 +41,7 @@ Result reduce(const std::function<void(CadBuilder&)>& make, double percent, doub
     EXPECT_TRUE(r.stats.ok) << r.stats.message;
     r.faces = m.fn;
     r.slivers = meshCompactness(m).shareBelow01;
-    const double forward = oneSidedHausdorff(input, m, 100000, 1).max;
-    const double backward = oneSidedHausdorff(m, input, 100000, 2).max;
-    r.distance = 100 * std::max(forward, backward) / liveDiagonal(input);
+    r.distance = hausdorffPercent(input, m);
     return r;
 }
 

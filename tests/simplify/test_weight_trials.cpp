@@ -29,8 +29,7 @@ struct Outcome {
     SimplifyStats stats;
 };
 
-// `make`'s part reduced by `percent`, with the trials or with the default weight alone,
-// measured with other samples than the trials' own (seeds 1 and 2, 100 000 per side).
+// `make`'s part reduced by `percent`, with the trials or with the default weight alone.
 Outcome reduce(const std::function<void(CadBuilder&)>& make, double percent, bool trials)
 {
     TestMesh input, m;
@@ -43,9 +42,7 @@ Outcome reduce(const std::function<void(CadBuilder&)>& make, double percent, boo
     o.stats = simplify(m, p);
     EXPECT_TRUE(o.stats.ok) << o.stats.message;
     o.faces = m.fn;
-    const double forward = oneSidedHausdorff(input, m, 100000, 1).max;
-    const double backward = oneSidedHausdorff(m, input, 100000, 2).max;
-    o.distance = 100 * std::max(forward, backward) / liveDiagonal(input);
+    o.distance = hausdorffPercent(input, m);
     return o;
 }
 
@@ -261,9 +258,7 @@ TEST(WeightTrials, FeaturesAtCostAreTriedWithoutTheirConstraintPlanes)
         const SimplifyStats s = simplify(m, p);
         EXPECT_TRUE(s.ok) << s.message;
         EXPECT_LE(m.fn, s.targetFaces);
-        const double forward = oneSidedHausdorff(input, m, 100000, 1).max;
-        const double backward = oneSidedHausdorff(m, input, 100000, 2).max;
-        return std::max(forward, backward) / liveDiagonal(input);
+        return hausdorffPercent(input, m);
     };
     EXPECT_LT(distanceWith(free), 0.8 * distanceWith(held));
     const Outcome with = reduce(chip, 95, true);
