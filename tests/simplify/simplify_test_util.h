@@ -4,8 +4,11 @@
 #include "cad_meshes.h"
 #include "test_mesh.h"
 
+#include "core/compactness.h"
 #include "core/hausdorff.h"
 #include "core/simplify.h"
+
+#include <gtest/gtest.h>
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/append.h>
@@ -21,6 +24,29 @@ inline double hausdorffPercent(TestMesh& input, TestMesh& result)
     const double forward = oneSidedHausdorff(input, result, 100000, 1).max;
     const double backward = oneSidedHausdorff(result, input, 100000, 2).max;
     return 100 * std::max(forward, backward) / liveDiagonal(input);
+}
+
+// A part simplified, against the part as built: what the tests compare.
+struct Reduction {
+    SimplifyStats stats;
+    int faces = 0;
+    double slivers = 0.0;   // share of faces with compactness < 0.1
+    double distance = 0.0;  // hausdorffPercent
+};
+
+// `make`'s part (a CadBuilder recipe) simplified with `p`.
+template <class Make>
+Reduction reduceWith(const Make& make, const SimplifyParams& p)
+{
+    TestMesh input, m;
+    buildInputAndCopy(make, input, m);
+    Reduction r;
+    r.stats = simplify(m, p);
+    EXPECT_TRUE(r.stats.ok) << r.stats.message;
+    r.faces = m.fn;
+    r.slivers = meshCompactness(m).shareBelow01;
+    r.distance = hausdorffPercent(input, m);
+    return r;
 }
 
 inline void copyMesh(TestMesh& dst, TestMesh& src)

@@ -21,28 +21,13 @@ using namespace cadlod::test;
 
 namespace {
 
-struct Result {
-    double slivers = 0.0;   // share of faces with compactness < 0.1
-    double distance = 0.0;  // symmetric Hausdorff distance to the input, % of the diagonal
-    int faces = 0;
-    SimplifyStats stats;
-};
-
-Result reduce(const std::function<void(CadBuilder&)>& make, double percent, double sliverCountShare)
+Reduction reduce(const std::function<void(CadBuilder&)>& make, double percent, double sliverCountShare)
 {
-    TestMesh input, m;
-    buildInputAndCopy(make, input, m);
     SimplifyParams p;
     p.reductionPerc = percent;
     p.weightTrialsMaxFaces = 0;  // the guard itself, not the trials' pick
     p.sliverCountShare = sliverCountShare;
-    Result r;
-    r.stats = simplify(m, p);
-    EXPECT_TRUE(r.stats.ok) << r.stats.message;
-    r.faces = m.fn;
-    r.slivers = meshCompactness(m).shareBelow01;
-    r.distance = hausdorffPercent(input, m);
-    return r;
+    return reduceWith(make, p);
 }
 
 constexpr double kNever = 2.0;  // a share above 1: the count never applies
@@ -58,7 +43,7 @@ TEST(SliverCount, NearTheTargetTheBoardKeepsFewerSlivers)
 {
     for (double percent : {50.0, 75.0}) {
         SCOPED_TRACE(percent);
-        const Result counted = reduce(board, percent, 0.25), uncounted = reduce(board, percent, kNever);
+        const Reduction counted = reduce(board, percent, 0.25), uncounted = reduce(board, percent, kNever);
         EXPECT_EQ(counted.faces, uncounted.faces);
         EXPECT_GT(uncounted.slivers, 0.01);
         EXPECT_LT(counted.slivers, 0.7 * uncounted.slivers);
@@ -69,12 +54,12 @@ TEST(SliverCount, NearTheTargetTheBoardKeepsFewerSlivers)
 // Below the share (90 % keeps a tenth of the faces) the count does not apply: the same run.
 TEST(SliverCount, FartherDownItDoesNotApply)
 {
-    const Result counted = reduce(board, 90, 0.25), uncounted = reduce(board, 90, kNever);
+    const Reduction counted = reduce(board, 90, 0.25), uncounted = reduce(board, 90, kNever);
     EXPECT_EQ(counted.faces, uncounted.faces);
     EXPECT_EQ(counted.slivers, uncounted.slivers);
     EXPECT_EQ(counted.distance, uncounted.distance);
     // A share of 0 counts at every target: the 90 % run changes.
-    const Result always = reduce(board, 90, 0.0);
+    const Reduction always = reduce(board, 90, 0.0);
     EXPECT_NE(always.distance, uncounted.distance);
 }
 

@@ -23,27 +23,14 @@ using namespace cadlod::test;
 
 namespace {
 
-struct Outcome {
-    double distance = 0.0;  // symmetric Hausdorff distance to the input, % of the diagonal
-    int faces = 0;
-    SimplifyStats stats;
-};
-
 // `make`'s part reduced by `percent`, with the trials or with the default weight alone.
-Outcome reduce(const std::function<void(CadBuilder&)>& make, double percent, bool trials)
+Reduction reduce(const std::function<void(CadBuilder&)>& make, double percent, bool trials)
 {
-    TestMesh input, m;
-    buildInputAndCopy(make, input, m);
     SimplifyParams p;
     p.reductionPerc = percent;
     if (!trials)
         p.weightTrialsMaxFaces = 0;
-    Outcome o;
-    o.stats = simplify(m, p);
-    EXPECT_TRUE(o.stats.ok) << o.stats.message;
-    o.faces = m.fn;
-    o.distance = hausdorffPercent(input, m);
-    return o;
+    return reduceWith(make, p);
 }
 
 // The trials' log line for `make`'s part simplified with `p`.
@@ -88,7 +75,7 @@ TEST(WeightTrials, AFarReductionKeepsTheWeightClosestToTheInput)
         double percent;
     };
     for (const Case& c : {Case{"gull-wing chip", chip, 90.0}, Case{"shaft", shaft, 95.0}}) {
-        const Outcome with = reduce(c.make, c.percent, true), without = reduce(c.make, c.percent, false);
+        const Reduction with = reduce(c.make, c.percent, true), without = reduce(c.make, c.percent, false);
         EXPECT_EQ(with.faces, without.faces) << c.name;
         EXPECT_LT(with.distance, 0.85 * without.distance) << c.name << ": " << with.stats.weightTrials;
         EXPECT_NE(with.stats.weightTrials.find("0.005 ("), std::string::npos) << with.stats.weightTrials;
@@ -130,7 +117,7 @@ TEST(WeightTrials, NeverFartherThanTheDefaultWeight)
     };
     for (const Case& c : {Case{"circuit board", board, 50.0}, Case{"circuit board", board, 90.0},
                           Case{"shaft", shaft, 75.0}, Case{"tube with fin", tube, 90.0}}) {
-        const Outcome with = reduce(c.make, c.percent, true), without = reduce(c.make, c.percent, false);
+        const Reduction with = reduce(c.make, c.percent, true), without = reduce(c.make, c.percent, false);
         EXPECT_EQ(with.faces, without.faces) << c.name << " at " << c.percent;
         EXPECT_LE(with.distance, 1.02 * without.distance)
             << c.name << " at " << c.percent << " %: " << with.stats.weightTrials;
@@ -253,15 +240,12 @@ TEST(WeightTrials, FeaturesAtCostAreTriedWithoutTheirConstraintPlanes)
     EXPECT_EQ(free.largeFaceWeight, held.largeFaceWeight);
 
     auto distanceWith = [](const SimplifyParams& p) {
-        TestMesh input, m;
-        buildInputAndCopy(chip, input, m);
-        const SimplifyStats s = simplify(m, p);
-        EXPECT_TRUE(s.ok) << s.message;
-        EXPECT_LE(m.fn, s.targetFaces);
-        return hausdorffPercent(input, m);
+        const Reduction r = reduceWith(chip, p);
+        EXPECT_LE(r.faces, r.stats.targetFaces);
+        return r.distance;
     };
     EXPECT_LT(distanceWith(free), 0.8 * distanceWith(held));
-    const Outcome with = reduce(chip, 95, true);
+    const Reduction with = reduce(chip, 95, true);
     EXPECT_NE(with.stats.weightTrials.find("kept 1 with feature penalty 1, constraint planes x 0"), std::string::npos)
         << with.stats.weightTrials;
 }
@@ -284,7 +268,7 @@ TEST(WeightTrials, OneTrialLoosensTheConstraintPlanesAtEveryTarget)
     caller.boundaryWeight = 2;
     EXPECT_EQ(trialParams(caller, *loosened).boundaryWeight, 2 * loosened->constraintPlanes);
     EXPECT_EQ(trialParams(caller, *loosened).featurePenalty, caller.featurePenalty);
-    const Outcome half = reduce(board, 50, true);
+    const Reduction half = reduce(board, 50, true);
     EXPECT_NE(half.stats.weightTrials.find(", constraint planes x 0.25 ("), std::string::npos)
         << half.stats.weightTrials;
     // Without constraint planes (boundary weight 0) there is nothing to loosen: not tried.
@@ -316,8 +300,8 @@ TEST(WeightTrials, OneTrialRunsWithoutTheShapeGuard)
 
     // A board whose parts' rounded edges are strips of long faces: without the guard the
     // trial at 50 % comes closer, and it is kept.
-    const Outcome unguardedKept = reduce(board, 50, true);
-    const Outcome guarded = reduce(board, 50, false);
+    const Reduction unguardedKept = reduce(board, 50, true);
+    const Reduction guarded = reduce(board, 50, false);
     EXPECT_NE(unguardedKept.stats.weightTrials.find("kept 0.005, no shape guard"), std::string::npos)
         << unguardedKept.stats.weightTrials;
     EXPECT_LT(unguardedKept.distance, 0.9 * guarded.distance);
