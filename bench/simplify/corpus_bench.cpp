@@ -18,6 +18,7 @@
 //                [--feature-penalty X] [--shading-weight X] [--large-face-weight X]
 //                [--tie-tolerance X] [--quality-threshold X] [--shading-angle DEG] [--boundary-weight X]
 //                [--min-compactness X] [--feature-angle DEG] [--candidates N] [--sliver-count-share X]
+//                [--trials-max-faces N]    (0: no weight trials, one run with the weights given)
 //                                          cadlod's SimplifyParams of those names (tuning sweeps)
 //                [--meshes DIR]            every input and result as PLY (DIR/<part>_input.ply,
 //                                          DIR/<part>_<reduction>_<tool>.ply), to look into a loss
@@ -582,6 +583,7 @@ int main(int argc, char** argv)
         else if (key == "--sliver-count-share") cadlodParams.sliverCountShare = std::stod(value());
         else if (key == "--feature-angle") cadlodParams.featureAngle = std::stod(value());
         else if (key == "--candidates") cadlodParams.candidatesPerEdge = std::stoi(value());
+        else if (key == "--trials-max-faces") cadlodParams.weightTrialsMaxFaces = std::stoi(value());
         else {
             std::fprintf(stderr, "unknown option %s (see the head of corpus_bench.cpp)\n", key.c_str());
             return 2;

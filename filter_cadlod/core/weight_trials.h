@@ -57,7 +57,11 @@ struct TrialWeights {
 // constraint planes at a quarter, at every target: a crease vertex may then leave its place
 // on a curved crease where that makes fewer slivers, judged like the others by how close the
 // result stays (docs/benchmarks.md, issue 14's "Constraint planes in the trials"). The last
-// runs them without the shape guard, at near targets (kUnguardedTrialShare).
+// runs without the shape guard, at near targets (kUnguardedTrialShare), and with the
+// constraint planes at a tenth: on a fine part's curved creases (a chip lead's bend and the
+// strips of its sides) the planes hold crease vertices whose going costs nothing a viewer
+// sees, and the guard keeps the strips' slivers; without both the result is often closer
+// and has fewer slivers (docs/benchmarks.md, "The unguarded trial's constraint planes").
 inline constexpr TrialWeights kTrials[] = {
     {1.0, true, false},          // the caller's weights
     {10.0, true, false},         // heavier planes
@@ -66,7 +70,7 @@ inline constexpr TrialWeights kTrials[] = {
     {10.0, true, true},          // keeping smooth joins
     {200.0, false, false, 0.0},  // features at their cost, no constraint planes
     {1.0, true, false, 0.25},    // the constraint planes at a quarter
-    {1.0, true, false, 1.0, false}};  // no shape guard (near targets only)
+    {1.0, true, false, 0.1, false}};  // no shape guard, the constraint planes at a tenth (near targets only)
 // Features go at their cost, and smooth joins are kept, only where the target leaves at most
 // this share of the faces: there, keeping every crease takes the faces the large surfaces
 // need; above it, a feature keeps its price (a tube's rim stays on its polyline at 75 %). The
@@ -134,14 +138,14 @@ inline SimplifyParams trialParams(const SimplifyParams& caller, const TrialWeigh
 // weights with the caller's feature price always; features at their cost and smooth joins
 // only where the target leaves at most kFeaturesAtCostShare of the faces, and smooth joins
 // only toward a target above 0 (the shape guards they are one of relax only toward a face
-// target). Without constraint planes to weigh (boundaryWeight 0), a trial that varies them
-// would repeat another.
+// target). Without constraint planes to weigh (boundaryWeight 0), a trial that varies only
+// them would repeat another; the one without the shape guard still differs.
 inline bool trialRunsAt(const TrialWeights& w, const SimplifyParams& caller, int target, int faces)
 {
-    if (w.constraintPlanes != 1.0 && caller.boundaryWeight <= 0)
-        return false;
     if (!w.shapeGuard)
         return caller.minCompactness > 0 && target >= kUnguardedTrialShare * faces - 0.5;
+    if (w.constraintPlanes != 1.0 && caller.boundaryWeight <= 0)
+        return false;
     const bool farTarget = target <= kFeaturesAtCostShare * faces + 0.5;
     if (w.keepSmoothJoins)
         return farTarget && target > 0;

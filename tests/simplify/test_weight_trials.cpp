@@ -1,8 +1,8 @@
 // Weight trials (weight_trials.h): a small mesh with a face target is simplified on copies
 // with the large-face weight times 1, 10 and 40, times 200 with features at their quadric
 // cost (with their constraint planes and without), keeping smooth joins, and with the
-// constraint planes loosened, each result measured against the input, and the weights of
-// the closest are used on the mesh itself.
+// constraint planes loosened (near the input also without the shape guard), each result
+// measured against the input, and the weights of the closest are used on the mesh itself.
 #include "cad_meshes.h"
 #include "simplify_test_util.h"
 #include "test_mesh.h"
@@ -280,9 +280,10 @@ TEST(WeightTrials, OneTrialLoosensTheConstraintPlanesAtEveryTarget)
     EXPECT_EQ(log.find("constraint planes"), std::string::npos) << log;
 }
 
-// One trial runs without the shape guard (SimplifyParams::minCompactness 0) where the target
-// leaves at least half of the faces: on strips of slivers (a lead's bend) the guard refuses
-// the collapses that would coarsen them. Not tried when the caller has no guard to drop.
+// One trial runs without the shape guard (SimplifyParams::minCompactness 0) and with the
+// constraint planes at a tenth where the target leaves at least half of the faces: on strips
+// of slivers (a lead's bend) the guard refuses the collapses that would coarsen them. Not
+// tried when the caller has no guard to drop.
 TEST(WeightTrials, OneTrialRunsWithoutTheShapeGuard)
 {
     const auto unguarded = std::find_if(std::begin(kTrials), std::end(kTrials),
@@ -298,11 +299,21 @@ TEST(WeightTrials, OneTrialRunsWithoutTheShapeGuard)
     unguardedCaller.minCompactness = 0;
     EXPECT_FALSE(trialRunsAt(*unguarded, unguardedCaller, 500, 1000));
 
+    // The same trial loosens the constraint planes to a tenth: on a fine part's curved
+    // creases (a chip lead's bend) they hold crease vertices a viewer would not miss.
+    caller.boundaryWeight = 2.0;
+    EXPECT_DOUBLE_EQ(trialParams(caller, *unguarded).boundaryWeight, 0.2);
+    EXPECT_EQ(trialParams(caller, *unguarded).largeFaceWeight, caller.largeFaceWeight);
+    SimplifyParams withoutPlanes;  // nothing to loosen, but the guard is still dropped
+    withoutPlanes.boundaryWeight = 0;
+    EXPECT_TRUE(trialRunsAt(*unguarded, withoutPlanes, 500, 1000));
+
     // A board whose parts' rounded edges are strips of long faces: without the guard the
     // trial at 50 % comes closer, and it is kept.
     const Reduction unguardedKept = reduce(board, 50, true);
     const Reduction guarded = reduce(board, 50, false);
-    EXPECT_NE(unguardedKept.stats.weightTrials.find("kept 0.005, no shape guard"), std::string::npos)
+    EXPECT_NE(unguardedKept.stats.weightTrials.find("kept 0.005, constraint planes x 0.1, no shape guard"),
+              std::string::npos)
         << unguardedKept.stats.weightTrials;
     EXPECT_LT(unguardedKept.distance, 0.9 * guarded.distance);
     SimplifyParams none;
