@@ -34,7 +34,9 @@ struct LodSetOptions {
     std::size_t hausdorffSamples = 0;   // face samples per side; 0: as many as level-0 faces
     SimplifyParams simplify;            // stop criteria are set per level
     int setId = 1;
-    RunTogether runTogether;            // measuring a level beside simplifying the next; empty: in sequence
+    // Measuring a level beside simplifying the next, and that level's weight trials two at a
+    // time (weight_trials.h); empty: in sequence. Either way the levels come out the same.
+    RunTogether runTogether;
 };
 
 struct LodSetResult {
@@ -288,7 +290,8 @@ LodSetResult buildLodSet(MeshType& original, const LodSetOptions& options,
     result.compactness.push_back(meshCompactness(original));
 
     // Level k is measured while level k+1 is simplified (from a copy of it, or of the
-    // original): the two share nothing mutable.
+    // original): the two share nothing mutable. The simplification runs its weight trials
+    // two at a time too: they take most of a level's time, the measure far less.
     const RunTogether together = options.runTogether ? options.runTogether : RunTogether(runInSequence);
     const int count = int(plan.targetFaces.size());
     DistanceToLevelZero<MeshType> distanceToOriginal(original, samples, result.modelSize, together);
@@ -326,7 +329,7 @@ LodSetResult buildLodSet(MeshType& original, const LodSetOptions& options,
             progress(100 * (k - 1) / count, (k <= count ? "Simplifying level " + std::to_string(k)
                                                           : "Measuring level " + std::to_string(count)).c_str());
         together([&] { if (previous) measure(*previous); },
-                 [&] { if (mesh) stats = simplify(*mesh, params, nullptr); });
+                 [&] { if (mesh) stats = simplify(*mesh, params, nullptr, together); });
         if (previous)
             addLevel(*previous, k - 1);
         if (!mesh)

@@ -7,7 +7,9 @@
 
 #include <vcg/complex/algorithms/create/platonic.h>
 
+#include <algorithm>
 #include <deque>
+#include <thread>
 
 using namespace cadlod;
 using cadlod::test::TestMesh;
@@ -132,6 +134,53 @@ TEST(LodBuilder, FromOriginalGivesSameFaceCounts)
     ASSERT_TRUE(b.result.ok()) << b.result.error;
     EXPECT_NEAR(b.result.levels[1].faces, 2560, 2);
     EXPECT_NEAR(b.result.levels[2].faces, 1024, 2);
+}
+
+TEST(LodBuilder, TheLevelsWeightTrialsRunTwoAtATimeAndGiveTheSameSet)
+{
+    // What the set hands to its RunTogether from within a pair it started on this thread:
+    // the pairs of a level's weight trials (the level is simplified on the calling thread,
+    // the previous one measured on the other).
+    const std::thread::id caller = std::this_thread::get_id();
+    int depth = 0, nestedPairs = 0;
+    LodSetOptions threaded;
+    threaded.levels = "50 90";
+    threaded.runTogether = [&](const Task& a, const Task& b) {
+        const bool onCaller = std::this_thread::get_id() == caller;
+        if (onCaller)
+            nestedPairs += depth++ > 0;
+        runOnTwoThreads(a, b);
+        if (onCaller)
+            --depth;
+    };
+    LodSetOptions sequential = threaded;
+    sequential.runTogether = nullptr;
+    Built one, two;
+    build(one, sequential);
+    build(two, threaded);
+    ASSERT_TRUE(one.result.ok()) << one.result.error;
+    ASSERT_TRUE(two.result.ok()) << two.result.error;
+    ASSERT_EQ(two.result.steps.size(), 2u);
+    int trialPairs = 0;
+    for (const SimplifyStats& s : two.result.steps) {
+        // "plane weights tried (…): 0.005 (…); 0.05 (…); …": one parenthesis per trial after the first.
+        const int trials = int(std::count(s.weightTrials.begin(), s.weightTrials.end(), '(')) - 1;
+        EXPECT_GE(trials, 4) << s.weightTrials;  // three plane weights, the constraint planes at a quarter
+        trialPairs += trials / 2;
+    }
+    EXPECT_EQ(nestedPairs, trialPairs);
+    for (std::size_t i = 0; i < one.result.steps.size(); ++i)
+        EXPECT_EQ(one.result.steps[i].weightTrials, two.result.steps[i].weightTrials) << "level " << i + 1;
+    ASSERT_EQ(one.result.levels.size(), two.result.levels.size());
+    for (std::size_t i = 0; i < one.result.levels.size(); ++i) {
+        EXPECT_EQ(one.result.levels[i].faces, two.result.levels[i].faces) << "level " << i;
+        EXPECT_EQ(one.result.levels[i].hausdorffMax, two.result.levels[i].hausdorffMax) << "level " << i;
+    }
+    for (std::size_t k = 0; k < one.levels.size(); ++k) {
+        ASSERT_EQ(one.levels[k].vert.size(), two.levels[k].vert.size());
+        for (std::size_t v = 0; v < one.levels[k].vert.size(); ++v)
+            ASSERT_EQ(one.levels[k].vert[v].cP(), two.levels[k].vert[v].cP()) << "level " << k + 1 << " vertex " << v;
+    }
 }
 
 TEST(LodBuilder, FaceCountLevels)
