@@ -255,7 +255,7 @@ bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<
     weights.areaShare = params.largeFaceWeight;
     ctx.quadrics.init(m, weights, [&](FaceType& f, int j) { return f.IsUserBit(ctx.bits.edge[j]); });
     ctx.storeInputNormals(m);
-    ctx.farFieldFloor = int(kFacingFarField * m.fn);
+    ctx.farFieldFloor = farFieldFloor(m.fn);
     ctx.countsSlivers = stats.targetFaces > 0 && stats.targetFaces >= params.sliverCountShare * m.fn;
     if (params.normalCheck && params.facingCheck) {
         ctx.surface = std::make_shared<InputSurface>(m, ctx.diagonal);

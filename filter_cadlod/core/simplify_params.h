@@ -123,6 +123,13 @@ struct SimplifyParams {
 // stop at 95 %.
 inline constexpr double kFacingFarField = 0.05;
 
+// The face count where the far field starts for a mesh of `faces` (CollapseContext::
+// farFieldFloor): a collapse from more faces than this is checked against the input surface.
+inline int farFieldFloor(int faces)
+{
+    return int(kFacingFarField * faces);
+}
+
 // A collapse that turns a face away from the input surface is priced at this many times the
 // feature penalty, unless facingPenalty says otherwise. A broken feature's error is in the
 // quadric (its constraint planes); a face lit as the far side is an error the quadric does

@@ -286,10 +286,12 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
     const std::size_t samples = std::max(std::size_t(input.fn), kTrialMinSamples);
     const HausdorffSamples onInput = hausdorffSamples(input, samples, kTrialSeedForward);
     const ShadingInput<CoreMesh> shadingInput(input, toInput, kTrialShadingSamples, kTrialShadingSeed);
-    // Turned faces count where simplify() checks them: not when the target is in the far field.
+    // Turned faces count where simplify() checks them: not when the target is in the far
+    // field. At 95 % the target is about the far field's floor; every collapse down to it
+    // is checked, so its turned faces count.
     const int target = targetFaceCount(params, input.fn);
     std::optional<InputSurface> surface;
-    if (target >= kFacingFarField * input.fn)
+    if (target >= farFieldFloor(input.fn))
         surface.emplace(input, liveDiagonal(input));
     std::vector<WeightTrial> trials;
     for (const TrialWeights& w : kTrials)

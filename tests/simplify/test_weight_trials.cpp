@@ -4,12 +4,14 @@
 // constraint planes loosened (near the input also without the shape guard), each result
 // measured against the input, and the weights of the closest are used on the mesh itself.
 #include "cad_meshes.h"
+#include "mesh_checks.h"
 #include "simplify_test_util.h"
 #include "test_mesh.h"
 
 #include "core/hausdorff.h"
 #include "core/shading_deviation.h"
 #include "core/simplify.h"
+#include "core/weight_trials.h"
 
 #include <gtest/gtest.h>
 
@@ -17,6 +19,7 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
 using namespace cadlod;
 using namespace cadlod::test;
@@ -379,4 +382,32 @@ TEST(WeightTrials, OnlySmallMeshesWithAFaceTarget)
     q.reductionPerc = 75;
     q.maxError = 0;
     EXPECT_TRUE(simplify(m, q).weightTrials.empty());
+}
+
+// A trial's faces turned over count wherever simplify() checks its collapses against the
+// input surface: down to the far field's floor, the whole 5 % of the faces included. The
+// chip with eight bent leads (2 052 faces) toward 102 faces, under 5 % (102.6) but not under
+// the floor: each trial's count is the bench's own count (mesh_checks.h) on the same run,
+// and one trial at least turns a face, so a count of 0 would show.
+TEST(WeightTrials, TurnedFacesCountDownToTheFarFieldsFloor)
+{
+    TestMesh input, m;
+    buildInputAndCopy(chip, input, m);
+    SimplifyParams p;
+    p.targetFaces = farFieldFloor(input.fn);
+    ASSERT_LT(p.targetFaces, kFacingFarField * input.fn);
+    const std::vector<WeightTrial> trials = runWeightTrials(m, p, [&](CoreMesh& copy, const SimplifyParams& q) {
+        return simplify(copy, q);
+    }, nullptr);
+    ASSERT_GE(trials.size(), 4u);
+    int turned = 0;
+    for (const WeightTrial& t : trials) {
+        TestMesh run;
+        copyMesh(run, input);
+        const SimplifyStats s = simplify(run, trialParams(p, t.weights));
+        ASSERT_TRUE(s.ok) << s.message;
+        EXPECT_EQ(t.turned, foldedFaces(run, input)) << detail::describeWeights("trial", p, t.weights);
+        turned += t.turned;
+    }
+    EXPECT_GT(turned, 0) << "no trial turns a face: the chip no longer tests the count";
 }
