@@ -163,7 +163,7 @@ TEST(LodBuilder, TheLevelsWeightTrialsRunTwoAtATimeAndGiveTheSameSet)
     ASSERT_EQ(two.result.steps.size(), 2u);
     int trialPairs = 0;
     for (const SimplifyStats& s : two.result.steps) {
-        // "plane weights tried (…): 0.005 (…); 0.05 (…); …": one parenthesis per trial after the first.
+        // "plane weights tried (…): 0.005 (…); 0.05 (…); …": one parenthesis per trial, and the header's.
         const int trials = int(std::count(s.weightTrials.begin(), s.weightTrials.end(), '(')) - 1;
         EXPECT_GE(trials, 4) << s.weightTrials;  // three plane weights, the constraint planes at a quarter
         trialPairs += trials / 2;

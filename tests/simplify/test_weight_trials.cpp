@@ -396,7 +396,7 @@ TEST(WeightTrials, TurnedFacesCountDownToTheFarFieldsFloor)
     SimplifyParams p;
     p.targetFaces = farFieldFloor(input.fn);
     ASSERT_LT(p.targetFaces, kFacingFarField * input.fn);
-    const std::vector<WeightTrial> trials = runWeightTrials(m, p, [&](CoreMesh& copy, const SimplifyParams& q) {
+    const std::vector<WeightTrial> trials = runWeightTrials(m, p, [](CoreMesh& copy, const SimplifyParams& q) {
         return simplify(copy, q);
     }, nullptr);
     ASSERT_GE(trials.size(), 4u);
