@@ -729,6 +729,7 @@ private:
         bool v0Corner = false, v1Corner = false;  // on other than exactly two feature edges
         double worstCompactness = 1.0;
         int slivers = 0;  // faces below kSliver, the two the collapse removes included
+        bool removesSliver = false;  // a face it removes is a sliver and the edge is its shortest
     };
 
     Neighbourhood gatherRing(Context& ctx, VertexType* v0, VertexType* v1)
@@ -769,6 +770,7 @@ private:
                         const double c = compactness(f->cP(0), f->cP(1), f->cP(2));
                         n.worstCompactness = std::min(n.worstCompactness, c);
                         n.slivers += c < kSliver;
+                        n.removesSliver |= c < kSliver && isShortestEdge(*f, z, a == other ? (z + 1) % 3 : (z + 2) % 3);
                     }
                 } else {
                     const vcg::Point3d pa = vcg::Point3d::Construct(a->cP());
@@ -993,7 +995,8 @@ private:
         double minCost = std::numeric_limits<double>::max();
         for (int i = 0; i < count; ++i)
             minCost = std::min(minCost, cand[i].cost);
-        return priorityOf(ctx, minCost, ctx.quadrics.cappedArea(v0, v1), 1.0);
+        return priorityOf(ctx, minCost, ctx.quadrics.cappedArea(v0, v1), 1.0) *
+               ScalarType(std::min(1.0, ctx.params.sliverFirstShare));
     }
 
     // The candidates a collapse may use, ranked. Features are not locks but prices: a
@@ -1128,7 +1131,17 @@ private:
             this->_priority = ScalarType(ctx.farFieldPriority(std::sqrt(farField.ranked2)));
         } else {
             this->_priority = priorityOf(ctx, cand[best].ranked, ctx.quadrics.cappedArea(v0, v1), shape);
+            if (n.removesSliver)
+                this->_priority *= ScalarType(ctx.params.sliverFirstShare);
         }
+    }
+
+    // Whether the edge of f from corner i to corner j is no longer than its other two.
+    static bool isShortestEdge(const FaceType& f, int i, int j)
+    {
+        const int k = 3 - i - j;
+        const double edge = (f.cP(i) - f.cP(j)).SquaredNorm();
+        return edge <= (f.cP(i) - f.cP(k)).SquaredNorm() && edge <= (f.cP(j) - f.cP(k)).SquaredNorm();
     }
 
     // In the far field the placement is the valid candidate that opens the smallest distance

@@ -466,16 +466,17 @@ SimplifyStats simplifySharing(MeshType& m, const SimplifyParams& params, vcg::Ca
         // The trials run two at a time on copies (`together`); vcglib's pool of bit flags is
         // one per mesh type and process, so the copies share one set taken here.
         const TakenFeatureBits<CoreMesh> trialBits;
+        // Distances within the flat tolerance move no plane a viewer could see: the trials'
+        // pick does not tell them apart (an exact result then wins on slivers alone).
+        const double diagonal = liveDiagonal(m);
+        const double distanceFloor = params.flatTolerance * diagonal;
         const std::vector<WeightTrial> trials = runWeightTrials(
             m, params,
             [&](CoreMesh& copy, const SimplifyParams& p) {
                 return simplifySharing(copy, p, nullptr, runInSequence, &trialBits.bits);
             },
-            progress, together);
-        // Distances within the flat tolerance move no plane a viewer could see: the trials'
-        // pick does not tell them apart (an exact result then wins on slivers alone).
-        const double diagonal = liveDiagonal(m);
-        const std::size_t best = closestTrial(trials, params.flatTolerance * diagonal);
+            progress, together, distanceFloor);
+        const std::size_t best = keptTrial(trials, distanceFloor);
         if (best < trials.size())
             chosen = trialParams(params, trials[best].weights);
         stats.weightTrials = detail::describeTrials(trials, best, diagonal, params);

@@ -53,6 +53,8 @@ struct SimplifyParams {
     double minCompactness = 0.1;     // never create a face below this unless it improves the worst;
                                      // free collapses not below max(0.1, this); 0: no guard
     double qualityThreshold = 0.3;   // free collapses leaving faces below this compactness wait longer
+    double sliverFirstShare = 1.0;   // a collapse removing a sliver along its shortest edge is ranked
+                                     // at this share of its priority (1: as any other)
     // While the face target keeps at least this share of the input's faces, a collapse may not
     // add to the slivers (compactness < 0.1) around it either, even above the worst of them:
     // near the input a tessellation's strips of slivers are coarsened, not multiplied. Farther

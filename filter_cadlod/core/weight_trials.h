@@ -46,6 +46,7 @@ struct TrialWeights {
     bool keepSmoothJoins = false;
     double constraintPlanes = 1.0;
     bool shapeGuard = true;
+    double sliversFirst = 1.0;
 };
 // The trials, the caller's own weights first. The heaviest plane weight runs with features
 // at their quadric cost, once with their constraint planes and once without: a part whose
@@ -133,6 +134,7 @@ inline SimplifyParams trialParams(const SimplifyParams& caller, const TrialWeigh
     p.boundaryWeight = caller.boundaryWeight * w.constraintPlanes;
     if (!w.shapeGuard)
         p.minCompactness = 0.0;
+    p.sliverFirstShare = caller.sliverFirstShare * w.sliversFirst;
     if (!w.featuresPriced && caller.featurePenalty > 0)
         p.featurePenalty = std::min(caller.featurePenalty, 1.0);
     p.weightTrialsMaxFaces = 0;
@@ -167,6 +169,21 @@ bool weightTrialsApply(const MeshType& m, const SimplifyParams& p)
            !p.selectedOnly;
 }
 
+// The kept weights run once more with the collapses that remove a sliver along its shortest
+// edge ranked at this share of their priority (SimplifyParams::sliverFirstShare): among
+// collapses of about the same error those go first, and fewer slivers are left. Ranked by
+// anything but the error the largest distance may grow, so the result is kept only where it
+// costs next to nothing a viewer sees: its distance within kSliversFirstDistance times the
+// kept trial's, its shading within kSliversFirstShading times (kTrialShadingFloor alike), no
+// more faces turned, and at least kTrialSliverMargin fewer slivers (docs/benchmarks.md,
+// "Slivers first, where it costs nothing").
+inline constexpr double kSliversFirstShare = 0.7;
+inline constexpr double kSliversFirstDistance = 1.1;
+inline constexpr double kSliversFirstShading = 1.15;
+
+// Whether a trial is the kept weights run again slivers first (and not one of kTrials).
+inline bool isSliversFirstRun(const WeightTrial& t) { return t.weights.sliversFirst != 1.0; }
+
 // The closest trial: the lowest sum of its Hausdorff distance over the least of the trials
 // and its shading deviation over the least (kTrialShadingWeight), a trial's excess slivers
 // (kTrialSliverStep) and every face it turns away from the input surface beyond the fewest
@@ -175,8 +192,9 @@ bool weightTrialsApply(const MeshType& m, const SimplifyParams& p)
 // that floor: a result a hair from exact is not many times farther than an exact one.
 inline std::size_t closestTrial(const std::vector<WeightTrial>& trials, double distanceFloor = 0.0)
 {
-    const bool anyReached = std::any_of(trials.begin(), trials.end(), [](const WeightTrial& t) { return t.reached; });
-    auto candidate = [&](const WeightTrial& t) { return t.reached || !anyReached; };
+    const bool anyReached = std::any_of(trials.begin(), trials.end(),
+                                        [](const WeightTrial& t) { return t.reached && !isSliversFirstRun(t); });
+    auto candidate = [&](const WeightTrial& t) { return (t.reached || !anyReached) && !isSliversFirstRun(t); };
     int fewestTurned = std::numeric_limits<int>::max();
     for (const WeightTrial& t : trials)
         if (candidate(t))
@@ -201,6 +219,31 @@ inline std::size_t closestTrial(const std::vector<WeightTrial>& trials, double d
     for (std::size_t i = 0; i < trials.size(); ++i)
         if (candidate(trials[i]) && (best == trials.size() || score(trials[i]) < score(trials[best])))
             best = i;
+    return best;
+}
+
+// Whether `refined`, the kept trial `kept` run again slivers first, is kept instead: see
+// kSliversFirstShare.
+inline bool sliversFirstKept(const WeightTrial& refined, const WeightTrial& kept, double distanceFloor)
+{
+    const bool closeEnough = std::max(refined.hausdorff, distanceFloor) <=
+                             kSliversFirstDistance * std::max(kept.hausdorff, distanceFloor);
+    const bool shadedAlike = std::max(refined.shading, kTrialShadingFloor) <=
+                             kSliversFirstShading * std::max(kept.shading, kTrialShadingFloor);
+    return (refined.reached || !kept.reached) && refined.turned <= kept.turned && closeEnough && shadedAlike &&
+           refined.slivers <= kept.slivers - kTrialSliverMargin;
+}
+
+// The trial whose weights simplify the mesh: the closest of kTrials (closestTrial), or its
+// run slivers first when that is kept (sliversFirstKept). trials.size() when there is none.
+inline std::size_t keptTrial(const std::vector<WeightTrial>& trials, double distanceFloor = 0.0)
+{
+    const std::size_t best = closestTrial(trials, distanceFloor);
+    if (best == trials.size())
+        return best;
+    for (std::size_t i = 0; i < trials.size(); ++i)
+        if (isSliversFirstRun(trials[i]) && sliversFirstKept(trials[i], trials[best], distanceFloor))
+            return i;
     return best;
 }
 
@@ -254,7 +297,9 @@ inline std::string describeWeights(const char* what, const SimplifyParams& calle
     if (w.keepSmoothJoins)
         n += std::snprintf(text + n, sizeof text - std::size_t(n), " keeping smooth joins");
     if (p.minCompactness != caller.minCompactness)
-        std::snprintf(text + n, sizeof text - std::size_t(n), ", no shape guard");
+        n += std::snprintf(text + n, sizeof text - std::size_t(n), ", no shape guard");
+    if (p.sliverFirstShare != caller.sliverFirstShare)
+        std::snprintf(text + n, sizeof text - std::size_t(n), ", slivers first x %.4g", w.sliversFirst);
     return text;
 }
 
@@ -277,12 +322,15 @@ inline std::string describeTrials(const std::vector<WeightTrial>& trials, std::s
 }  // namespace detail
 
 // Simplifies copies of `m` once per weight with `simplifyCopy(copy, params)` and returns
-// the trials, measured against `m` (unchanged). `together` runs two trials at once (each
-// on its own copy; the measures of the input are only read), or one after the other.
-// `progress` (may be null) is told of each pair, from the calling thread.
+// the trials, measured against `m` (unchanged), and last the closest of them run again
+// slivers first (keptTrial chooses between them; `distanceFloor` as for closestTrial).
+// `together` runs two trials at once (each on its own copy; the measures of the input are
+// only read), or one after the other. `progress` (may be null) is told of each pair, from
+// the calling thread.
 template <class MeshType, class SimplifyCopy>
 std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& params, const SimplifyCopy& simplifyCopy,
-                                         vcg::CallBackPos* progress, const RunTogether& together = runInSequence)
+                                         vcg::CallBackPos* progress, const RunTogether& together = runInSequence,
+                                         double distanceFloor = 0.0)
 {
     CoreMesh input;
     detail::copyForTrial(input, m);
@@ -303,7 +351,7 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
         if (trialRunsAt(w, params, target, input.fn))
             trials.push_back({w});
     // The copies are made before the trials run: `m` is read from one thread only.
-    std::vector<CoreMesh> copies(trials.size());
+    std::vector<CoreMesh> copies(trials.size() + 1);
     auto run = [&](std::size_t k) {
         WeightTrial& t = trials[k];
         CoreMesh& trial = copies[k];
@@ -322,7 +370,7 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
     const std::size_t count = trials.size();
     for (std::size_t k = 0; k < count; k += 2) {
         if (progress)
-            progress(int(100 * k / (count + 1)),
+            progress(int(100 * k / (count + 2)),
                      detail::describeWeights("Trying plane weight", params, trials[k].weights).c_str());
         detail::copyForTrial(copies[k], m);
         if (k + 1 < count) {
@@ -331,6 +379,17 @@ std::vector<WeightTrial> runWeightTrials(MeshType& m, const SimplifyParams& para
         } else {
             run(k);
         }
+    }
+    const std::size_t closest = closestTrial(trials, distanceFloor);
+    if (closest < count) {
+        WeightTrial refined{trials[closest].weights};
+        refined.weights.sliversFirst = kSliversFirstShare;
+        trials.push_back(refined);
+        if (progress)
+            progress(int(100 * count / (count + 2)),
+                     detail::describeWeights("Trying plane weight", params, refined.weights).c_str());
+        detail::copyForTrial(copies[count], m);
+        run(count);
     }
     return trials;
 }

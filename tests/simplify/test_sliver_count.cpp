@@ -83,3 +83,23 @@ TEST(SliverCount, WithTheTrialsTheBoardShadesAlmostAsWell)
     EXPECT_LT(countedVisible, 1.1 * uncountedVisible);
     EXPECT_LT(countedSlivers, 0.5 * uncountedSlivers);
 }
+
+// Slivers first (SimplifyParams::sliverFirstShare): a collapse that removes a sliver along
+// its shortest edge is ranked at a share of its priority. The assembly (a shaft, a tube and a
+// plate) at half its faces keeps half the slivers at the same distance; at 1 the run is the
+// plain one.
+TEST(SliversFirst, TheAssemblyAtHalfKeepsFewerSlivers)
+{
+    auto reduceAssembly = [](double share) {
+        SimplifyParams p;
+        p.reductionPerc = 50;
+        p.weightTrialsMaxFaces = 0;  // the ranking itself, not the trials' pick
+        p.sliverFirstShare = share;
+        return reduceWith([](CadBuilder& b) { assembly(b, 48); }, p);
+    };
+    const Reduction plain = reduceAssembly(1.0), first = reduceAssembly(0.7);
+    EXPECT_EQ(first.faces, plain.faces);
+    EXPECT_GT(plain.slivers, 0.02);
+    EXPECT_LT(first.slivers, 0.6 * plain.slivers);
+    EXPECT_LE(first.distance, 1.01 * plain.distance);
+}

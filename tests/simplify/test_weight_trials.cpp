@@ -194,6 +194,40 @@ TEST(WeightTrials, ATurnedFaceCountsAsMuchAsTheBestDistance)
     EXPECT_EQ(closestTrial(t), 0u);
 }
 
+// The closest trial run again slivers first is kept instead only where it costs next to
+// nothing a viewer sees: within 1.1 times the distance and 1.15 times the shading (floors
+// alike), no more faces turned, at least a point fewer slivers. closestTrial never picks it.
+TEST(WeightTrials, SliversFirstIsKeptOnlyWhereItCostsNothingSeen)
+{
+    TrialWeights again;
+    again.sliversFirst = kSliversFirstShare;
+    // weights, distance, slivers, shading deviation, reached
+    const std::vector<WeightTrial> base = {{{}, 3.0, 0.10, 0.02, true}, {{}, 2.0, 0.10, 0.02, true},
+                                           {again, 2.18, 0.08, 0.022, true}};
+    EXPECT_EQ(closestTrial(base), 1u);
+    EXPECT_EQ(keptTrial(base), 2u);
+    auto keptWith = [&](auto change) {
+        std::vector<WeightTrial> t = base;
+        change(t[2]);
+        return keptTrial(t);
+    };
+    EXPECT_EQ(keptWith([](WeightTrial& r) { r.hausdorff = 2.24; }), 1u);  // 1.12 times farther
+    EXPECT_EQ(keptWith([](WeightTrial& r) { r.shading = 0.024; }), 1u);   // 1.2 times the shading
+    EXPECT_EQ(keptWith([](WeightTrial& r) { r.shading = 0.004; }), 2u);   // less is fine
+    EXPECT_EQ(keptWith([](WeightTrial& r) { r.turned = 1; }), 1u);
+    EXPECT_EQ(keptWith([](WeightTrial& r) { r.slivers = 0.095; }), 1u);   // half a point fewer
+    EXPECT_EQ(keptWith([](WeightTrial& r) { r.reached = false; }), 1u);
+    EXPECT_EQ(keptWith([](WeightTrial& r) { r.hausdorff = 0.5; }), 2u);  // closer still: kept
+    // The distance floor: a hair from exact counts as exact on both sides.
+    const std::vector<WeightTrial> exact = {{{}, 1e-12, 0.20, 0.0, true}, {again, 3e-9, 0.15, 0.0, true}};
+    EXPECT_EQ(keptTrial(exact), 0u);
+    EXPECT_EQ(keptTrial(exact, 1e-6), 1u);
+    // Much closer but never a candidate of its own: the first trial stays the closest.
+    std::vector<WeightTrial> alone = base;
+    alone[2].hausdorff = 0.1;
+    EXPECT_EQ(closestTrial(alone), 1u);
+}
+
 // The trials' weights: the caller's first; the heaviest plane weight with features at their
 // quadric cost (a penalty of 1), a caller's hard locks (0) kept; the facing price is the
 // caller's in every trial, whatever its feature penalty.
@@ -445,4 +479,33 @@ TEST(WeightTrials, EachTrialsDistanceIsTheFullMaximumOfItsPoints)
     EXPECT_GT(*std::max_element(distances.begin(), distances.end()),
               *std::min_element(distances.begin(), distances.end()))
         << "every trial equally far: the chip no longer tells them apart";
+}
+
+// After the trials the closest of them runs once more slivers first: the last trial, the
+// closest one's weights with SimplifyParams::sliverFirstShare at kSliversFirstShare, measured
+// like the others. The chip at 75 % and 90 %.
+TEST(WeightTrials, TheClosestRunsAgainSliversFirst)
+{
+    for (double percent : {75.0, 90.0}) {
+        SCOPED_TRACE(percent);
+        TestMesh input, m;
+        buildInputAndCopy(chip, input, m);
+        SimplifyParams p;
+        p.reductionPerc = percent;
+        const std::vector<WeightTrial> trials = runWeightTrials(m, p, [](CoreMesh& copy, const SimplifyParams& q) {
+            return simplify(copy, q);
+        }, nullptr);
+        ASSERT_GE(trials.size(), 5u);
+        const WeightTrial& again = trials.back();
+        EXPECT_EQ(std::count_if(trials.begin(), trials.end(), isSliversFirstRun), 1);
+        ASSERT_TRUE(isSliversFirstRun(again));
+        const std::size_t closest = closestTrial(trials);
+        ASSERT_LT(closest, trials.size() - 1);
+        TrialWeights expected = trials[closest].weights;
+        expected.sliversFirst = kSliversFirstShare;
+        EXPECT_EQ(detail::describeWeights("", p, again.weights), detail::describeWeights("", p, expected));
+        EXPECT_EQ(trialParams(p, again.weights).sliverFirstShare, kSliversFirstShare);
+        EXPECT_GT(again.hausdorff, 0.0);
+        EXPECT_TRUE(again.reached);
+    }
 }
