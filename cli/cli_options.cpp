@@ -49,7 +49,8 @@ void addProtectionOptions(CLI::App& app, ProtectionArgs& a)
                  "quarter (seven runs at 90 % and beyond: the heaviest weight with features at their plain cost, with "
                  "and without their constraint planes, and one keeping smooth joins; where at least half of the faces "
                  "stay, one more without the shape guard), two at a time on two cores, and the one nearest the input "
-                 "(distance, shading, slivers, faces turned over) is used");
+                 "(distance, shading, slivers, faces turned over) is used, or its run with slivers removed first where "
+                 "that costs no distance or shading a viewer sees");
 }
 
 void addExportOptions(CLI::App& app, ExportArgs& a)
