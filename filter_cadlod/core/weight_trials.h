@@ -6,8 +6,10 @@
 // their distance. Which is closer to the input depends on the part, so a mesh small enough to
 // simplify in about a second is simplified once per pair of weights on a copy, each result is
 // measured against the input (symmetric Hausdorff distance, the share a viewer sees lit
-// differently, sliver share), and the weights of the closest are used.
-// simplify() then runs with those weights on the mesh itself; the trials never touch it.
+// differently, sliver share), and the weights of the closest are used, or the closest run
+// once more with slivers removed first where that costs nothing a viewer sees
+// (kSliversFirstShare). simplify() then runs with those weights on the mesh itself; the
+// trials never touch it.
 #pragma once
 
 #include "compactness.h"
