@@ -3,7 +3,7 @@
 // export (units, draw type, objects, records).
 #pragma once
 #include "mesh_files.h"
-#include "core/simplify_params.h"
+#include "simplify/simplify_params.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
 // The subcommands: each adds itself to the application and runs when chosen.
 #pragma once
-#include "core/run_together.h"
+#include "support/run_together.h"
 
 #include <CLI/CLI.hpp>
 

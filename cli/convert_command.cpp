@@ -9,9 +9,9 @@
 #include "progress_bar.h"
 #include "report_json.h"
 
-#include "core/lod_builder.h"
-#include "core/lod_chain.h"
-#include "flt_writer.h"
+#include "lod/lod_builder.h"
+#include "lod/lod_chain.h"
+#include "openflight/flt_writer.h"
 
 #include <chrono>
 #include <deque>

@@ -5,7 +5,7 @@
 #include "mesh_files.h"
 #include "progress_bar.h"
 
-#include "core/hausdorff.h"
+#include "measure/hausdorff.h"
 
 #include <cmath>
 #include <cstdio>

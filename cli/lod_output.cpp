@@ -1,8 +1,8 @@
 #include "lod_output.h"
 
 #include "cli_errors.h"
-#include "lod_assembly.h"
-#include "mesh_to_lod_model.h"
+#include "openflight/lod_assembly.h"
+#include "convert/mesh_to_lod_model.h"
 
 #include <tbb/parallel_for.h>
 

@@ -2,8 +2,8 @@
 // model: each level is converted on its own oneTBB task (independent, read-only), then
 // assembled in level order, so the file does not depend on the number of threads.
 #pragma once
-#include "core_mesh.h"
-#include "lod_model.h"
+#include "mesh/core_mesh.h"
+#include "openflight/lod_model.h"
 
 #include <string>
 #include <vector>

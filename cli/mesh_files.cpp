@@ -1,13 +1,13 @@
 #include "mesh_files.h"
 
 #include "cli_errors.h"
-#include "flt_reader.h"
-#include "lod_model_to_mesh.h"
-#include "mesh_to_lod_model.h"
+#include "openflight/flt_reader.h"
+#include "convert/lod_model_to_mesh.h"
+#include "convert/mesh_to_lod_model.h"
 #include "obj_reader.h"
 #include "output_file.h"
 #include "progress_bar.h"
-#include "scene_to_mesh.h"
+#include "convert/scene_to_mesh.h"
 #include "vrml/importer.h"
 
 #include <vcg/complex/algorithms/clean.h>

@@ -2,9 +2,9 @@
 // or gzip; OpenFlight, finest level; OBJ with our obj_reader.h; PLY/STL through vcglib)
 // and writing a mesh as PLY/OBJ/STL (vcglib) or a one-level OpenFlight file.
 #pragma once
-#include "core_mesh.h"
-#include "flt_writer.h"
-#include "lod_model.h"
+#include "mesh/core_mesh.h"
+#include "openflight/flt_writer.h"
+#include "openflight/lod_model.h"
 
 #include <string>
 

@@ -1,8 +1,8 @@
 #include "obj_reader.h"
 
 #include "cli_errors.h"
-#include "layer_metadata.h"
-#include "scene_to_mesh.h"
+#include "mesh/layer_metadata.h"
+#include "convert/scene_to_mesh.h"
 
 #include <vcg/complex/algorithms/update/normal.h>
 

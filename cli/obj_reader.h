@@ -13,7 +13,7 @@
 // Vertices are kept as the file lists them (no welding); vertex normals are the
 // area-weighted face normals (the file's vn can differ per corner, a mesh vertex cannot).
 #pragma once
-#include "core_mesh.h"
+#include "mesh/core_mesh.h"
 
 #include <cstddef>
 #include <istream>

@@ -1,6 +1,6 @@
 #include "output_file.h"
 
-#include "atomic_file.h"
+#include "openflight/atomic_file.h"
 #include "cli_errors.h"
 
 #include <algorithm>

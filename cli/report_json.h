@@ -1,9 +1,9 @@
 // JSON for the reports (--report, report --json): LOD levels with their errors in model
 // units, % of the diagonal and pixels at switch-in, compactness and what was relaxed.
 #pragma once
-#include "core/lod_builder.h"
-#include "core/lod_chain.h"
-#include "core/simplification_report.h"
+#include "lod/lod_builder.h"
+#include "lod/lod_chain.h"
+#include "measure/simplification_report.h"
 
 #include <nlohmann/json.hpp>
 #include <string>

@@ -7,7 +7,7 @@
 #include "output_file.h"
 #include "progress_bar.h"
 
-#include "core/simplify.h"
+#include "simplify/simplify.h"
 
 #include <memory>
 

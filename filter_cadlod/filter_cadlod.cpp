@@ -1,12 +1,12 @@
 #include "filter_cadlod.h"
 
 #include "compactness_colors.h"
-#include "core/compactness.h"
+#include "measure/compactness.h"
 #include "lod_set_filter.h"
 #include "report_filter.h"
 #include "simplify_filter.h"
 
-#include <progress_lines.h>
+#include "support/progress_lines.h"
 
 #include <vcg/complex/algorithms/stat.h>
 

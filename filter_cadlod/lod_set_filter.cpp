@@ -1,7 +1,7 @@
 #include "lod_set_filter.h"
 
-#include "core/lod_builder.h"
-#include "core/lod_chain.h"
+#include "lod/lod_builder.h"
+#include "lod/lod_chain.h"
 #include "simplify_parameters.h"
 
 #include <QElapsedTimer>

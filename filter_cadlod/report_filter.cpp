@@ -1,8 +1,8 @@
 #include "report_filter.h"
 
 #include "compactness_colors.h"
-#include "layer_metadata.h"
-#include "core/simplification_report.h"
+#include "mesh/layer_metadata.h"
+#include "measure/simplification_report.h"
 
 #include <vcg/complex/algorithms/update/bounding.h>
 

@@ -2,9 +2,9 @@
 
 #include "simplify_parameters.h"
 
-#include "core/compactness.h"
-#include "core/simplify.h"
-#include "layer_metadata.h"
+#include "measure/compactness.h"
+#include "simplify/simplify.h"
+#include "mesh/layer_metadata.h"
 
 #include <vcg/complex/algorithms/clean.h>
 

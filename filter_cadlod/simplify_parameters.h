@@ -2,7 +2,7 @@
 // simplification filter and the LOD-set filter (same names in both, for .mlx scripts).
 #pragma once
 
-#include "core/simplify_params.h"
+#include "simplify/simplify_params.h"
 
 #include <common/interfaces.h>
 

@@ -5,9 +5,9 @@
 // them (light mode 2).
 #include "format_adapters.h"
 
-#include "flt_writer.h"
-#include "layer_metadata.h"
-#include "mesh_to_lod_model.h"
+#include "openflight/flt_writer.h"
+#include "mesh/layer_metadata.h"
+#include "convert/mesh_to_lod_model.h"
 
 #include <QElapsedTimer>
 

@@ -4,8 +4,8 @@
 // layer_metadata.h); here: parameters, logging, the layer's optional components.
 #include "format_adapters.h"
 
-#include "flt_reader.h"
-#include "lod_model_to_mesh.h"
+#include "openflight/flt_reader.h"
+#include "convert/lod_model_to_mesh.h"
 
 #include <QElapsedTimer>
 

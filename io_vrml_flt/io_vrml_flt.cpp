@@ -2,7 +2,7 @@
 
 #include "format_adapters.h"
 
-#include <progress_lines.h>
+#include "support/progress_lines.h"
 
 namespace {
 bool isVrml(const QString& format)

@@ -3,8 +3,8 @@
 // (mesh_io/scene_to_mesh.h, instantiated for CMeshO).
 #include "format_adapters.h"
 
-#include "layer_metadata.h"
-#include "scene_to_mesh.h"
+#include "mesh/layer_metadata.h"
+#include "convert/scene_to_mesh.h"
 #include "vrml/importer.h"
 
 #include <wrap/io_trimesh/io_mask.h>

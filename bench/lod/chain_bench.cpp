@@ -14,7 +14,7 @@
 #include "chain_measures.h"
 #include "mesh_loading.h"
 
-#include "core/lod_chain.h"
+#include "lod/lod_chain.h"
 
 #include <chrono>
 #include <cstdio>

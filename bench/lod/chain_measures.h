@@ -9,8 +9,8 @@
 //    nearest distance it is drawn.
 #pragma once
 
-#include "layer_metadata.h"
-#include "core/lod_plan.h"
+#include "mesh/layer_metadata.h"
+#include "lod/lod_plan.h"
 
 #include <algorithm>
 #include <cmath>

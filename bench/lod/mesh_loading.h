@@ -4,7 +4,7 @@
 
 #include "test_mesh.h"
 
-#include "scene_to_mesh.h"
+#include "convert/scene_to_mesh.h"
 #include "vrml/importer.h"
 
 #include <string>

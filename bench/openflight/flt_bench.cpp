@@ -6,7 +6,7 @@
 //   flt_bench load file.flt                 load with OpenSceneGraph; prints time, LOD nodes, triangles
 // The test mesh is a wavy sheet split into 4 parts, with analytic normals: the same
 // geometry for every writer.
-#include "flt_writer.h"
+#include "openflight/flt_writer.h"
 
 #include <osg/Geode>
 #include <osg/Geometry>

@@ -8,11 +8,11 @@
 //       default parameters: OUTDIR/level<K>.ply and OUTDIR/lodset.flt, for when the
 //       "Generate CAD LOD Set" filter is not available
 // Output: one "key value" line per figure.
-#include "core/compactness.h"
-#include "core/hausdorff.h"
-#include "core/lod_builder.h"
-#include "core/simplify.h"
-#include "flt_writer.h"
+#include "measure/compactness.h"
+#include "measure/hausdorff.h"
+#include "lod/lod_builder.h"
+#include "simplify/simplify.h"
+#include "openflight/flt_writer.h"
 
 #include "test_mesh.h"
 

@@ -5,7 +5,7 @@ add_executable(corpus_bench corpus_bench.cpp "${CMAKE_SOURCE_DIR}/tests/support/
   "${CADLOD_VCGLIB_DIR}/wrap/ply/plylib.cpp")
 target_include_directories(corpus_bench PRIVATE
   "${CMAKE_SOURCE_DIR}/tests/simplify" "${CMAKE_SOURCE_DIR}/tests/support" "${CMAKE_SOURCE_DIR}/bench/lod")
-target_link_libraries(corpus_bench PRIVATE cadlod::simplify cadlod::shading cadlod::mesh_io CGAL::CGAL
+target_link_libraries(corpus_bench PRIVATE cadlod::lod cadlod::shading cadlod::convert CGAL::CGAL
   "${MESHOPTIMIZER_LIBRARY}")
 target_compile_definitions(corpus_bench PRIVATE CADLOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
 target_compile_options(corpus_bench PRIVATE -Wall -Wextra)

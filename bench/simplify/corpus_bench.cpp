@@ -42,9 +42,9 @@
 #include "ply_read.h"
 #include "shading_error.h"
 
-#include "core/compactness.h"
-#include "core/hausdorff.h"
-#include "core/simplify.h"
+#include "measure/compactness.h"
+#include "measure/hausdorff.h"
+#include "simplify/simplify.h"
 
 #include <vcg/complex/algorithms/update/normal.h>
 

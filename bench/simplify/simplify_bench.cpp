@@ -16,9 +16,9 @@
 #include "stock_quadric.h"
 #include "test_mesh.h"
 
-#include "core/compactness.h"
-#include "core/hausdorff.h"
-#include "core/simplify.h"
+#include "measure/compactness.h"
+#include "measure/hausdorff.h"
+#include "simplify/simplify.h"
 
 #include <sys/resource.h>
 #include <sys/wait.h>

@@ -3,8 +3,8 @@
 // truncation, random corruption, zero-length records and out-of-palette faces are already
 // covered by tests/openflight/test_reader.cpp (docs/reliability.md).
 #include "byte_access.h"
-#include "flt_reader.h"
-#include "flt_writer.h"
+#include "openflight/flt_reader.h"
+#include "openflight/flt_writer.h"
 #include "model_fixtures.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // openflight/atomic_file.h: the final path never holds a partial file.
-#include "atomic_file.h"
+#include "openflight/atomic_file.h"
 #include "cli_runner.h"
 
 #include <gtest/gtest.h>

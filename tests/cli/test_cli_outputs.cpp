@@ -2,7 +2,7 @@
 // no truncated output; simplify/report/info on PLY/OBJ/STL.
 #include "cad_meshes.h"
 #include "cli_runner.h"
-#include "flt_reader.h"
+#include "openflight/flt_reader.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -2,7 +2,7 @@
 // using vertex 1 in a later corner), corner forms, polygons, parts, and errors that say where.
 #include "cli_errors.h"
 #include "cli_runner.h"
-#include "layer_metadata.h"
+#include "mesh/layer_metadata.h"
 #include "obj_reader.h"
 
 #include <gtest/gtest.h>

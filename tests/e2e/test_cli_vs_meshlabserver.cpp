@@ -5,7 +5,7 @@
 // the command in the importer; README and docs/benchmarks.md say so.)
 #include "meshlabserver_runner.h"
 
-#include "flt_reader.h"
+#include "openflight/flt_reader.h"
 
 #include <gtest/gtest.h>
 

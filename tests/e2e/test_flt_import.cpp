@@ -1,7 +1,7 @@
 // Opening .flt files in meshlabserver: our own output round-trips, OpenSceneGraph's
 // output opens, corrupt files fail with the record offset (and never hang).
 #include "flt_e2e_meshes.h"
-#include "flt_writer.h"
+#include "openflight/flt_writer.h"
 #include "meshlabserver_runner.h"
 
 #include <gtest/gtest.h>

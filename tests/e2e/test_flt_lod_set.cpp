@@ -2,7 +2,7 @@
 // per level and the exporter writes the whole set, which OpenSceneGraph reads as LOD
 // nodes with outward-moving ranges, one center and fewer triangles per level.
 #include "flt_e2e_meshes.h"
-#include "flt_reader.h"
+#include "openflight/flt_reader.h"
 #include "meshlabserver_runner.h"
 #include "osg_probe.h"
 

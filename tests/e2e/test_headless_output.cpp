@@ -17,7 +17,7 @@ namespace {
 // The setting the README and the user guide put before every meshlabserver command.
 const char* const kDocumentedEnvironment = "QT_LOGGING_RULES='*.debug=false'";
 
-// The messages filter_cadlod reports progress with (filter_cadlod/core).
+// The messages filter_cadlod reports progress with (lib/support/progress_lines.h).
 const std::regex kProgressMessage("CAD edge collapse|Simplifying (level|for)|Measuring (level|the box)|LOD chain done");
 
 std::vector<std::string> linesOf(const std::string& text)

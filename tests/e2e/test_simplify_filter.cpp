@@ -4,7 +4,7 @@
 #include "meshlabserver_runner.h"
 #include "test_mesh.h"
 
-#include "core/compactness.h"
+#include "measure/compactness.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Writes small OpenFlight files like the OpenFlight tests do (Mesh and Face records, one
 // and three levels, per-part and per-level objects) as the reader's fuzz seed corpus.
-#include "flt_writer.h"
+#include "openflight/flt_writer.h"
 #include "model_fixtures.h"
 
 #include <cstdio>

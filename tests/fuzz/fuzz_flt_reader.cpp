@@ -1,7 +1,7 @@
 // libFuzzer target: the OpenFlight reader on bytes from memory. A success must give a
 // model whose triangles use finite vertices inside their part, and whose size stays a
 // fixed multiple of the input (no memory amplification); a failure must say why.
-#include "flt_reader.h"
+#include "openflight/flt_reader.h"
 
 #include <cmath>
 #include <cstddef>

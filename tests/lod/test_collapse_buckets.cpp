@@ -3,7 +3,7 @@
 #include "cad_meshes.h"
 #include "test_mesh.h"
 
-#include "core/collapse_buckets.h"
+#include "lod/collapse_buckets.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // watch: a cylinder's cap exported as thousands of faces around one hub vertex.
 #include "test_mesh.h"
 
-#include "core/components.h"
+#include "mesh/components.h"
 
 #include <vcg/complex/algorithms/update/topology.h>
 

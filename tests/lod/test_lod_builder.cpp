@@ -1,6 +1,6 @@
 // buildLodSet on a plain vcglib mesh: level counts, error and switch-distance monotony,
 // the per-mesh LodLevel attribute, part attributes carried into every level.
-#include "core/lod_builder.h"
+#include "lod/lod_builder.h"
 #include "test_mesh.h"
 
 #include <gtest/gtest.h>

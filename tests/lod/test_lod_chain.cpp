@@ -3,7 +3,7 @@
 #include "cad_meshes.h"
 #include "test_mesh.h"
 
-#include "core/lod_chain.h"
+#include "lod/lod_chain.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "core/lod_plan.h"
+#include "lod/lod_plan.h"
 
 #include <gtest/gtest.h>
 

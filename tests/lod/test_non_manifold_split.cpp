@@ -3,7 +3,7 @@
 #include "cad_meshes.h"
 #include "test_mesh.h"
 
-#include "core/non_manifold_split.h"
+#include "simplify/non_manifold_split.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "core/simplification_report.h"
-#include "core/simplify.h"
+#include "measure/simplification_report.h"
+#include "simplify/simplify.h"
 #include "test_mesh.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "core/compactness.h"
+#include "measure/compactness.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // inside the far sides of the search grid's box, which float rounding maps one cell past
 // the end of vcglib's grid (an assertion, or an out-of-bounds read with NDEBUG: found
 // when a simplified mesh stuck out of the original by just the grid's margin).
-#include "core/hausdorff.h"
+#include "measure/hausdorff.h"
 #include "test_mesh.h"
 
 #include <vcg/space/distance3.h>

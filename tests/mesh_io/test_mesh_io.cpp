@@ -1,10 +1,10 @@
-// The MeshLab-free conversions (io_vrml_flt/mesh_io/) on cadlod::CoreMesh: what the
+// The MeshLab-free conversions (lib/convert/) on cadlod::CoreMesh: what the
 // plugin does on a CMeshO, a command-line tool does on this mesh.
-#include "core_mesh.h"
-#include "layer_metadata.h"
-#include "lod_model_to_mesh.h"
-#include "mesh_to_lod_model.h"
-#include "scene_to_mesh.h"
+#include "mesh/core_mesh.h"
+#include "mesh/layer_metadata.h"
+#include "convert/lod_model_to_mesh.h"
+#include "convert/mesh_to_lod_model.h"
+#include "convert/scene_to_mesh.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // independently of vertex order and numbering.
 #pragma once
 
-#include "lod_model.h"
+#include "openflight/lod_model.h"
 #include "osg_probe.h"
 
 #include <algorithm>

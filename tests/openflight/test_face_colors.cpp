@@ -2,13 +2,13 @@
 // a VRML face set with one Color per face (colorPerVertex FALSE), as FreeCAD writes it,
 // imported, welded, written as .flt (Mesh and Face records) and read back by
 // OpenSceneGraph and by cadlod's own reader: every face keeps its colour.
-#include "core_mesh.h"
-#include "flt_reader.h"
-#include "flt_writer.h"
-#include "lod_model_to_mesh.h"
-#include "mesh_to_lod_model.h"
+#include "mesh/core_mesh.h"
+#include "openflight/flt_reader.h"
+#include "openflight/flt_writer.h"
+#include "convert/lod_model_to_mesh.h"
+#include "convert/mesh_to_lod_model.h"
 #include "osg_probe.h"
-#include "scene_to_mesh.h"
+#include "convert/scene_to_mesh.h"
 #include "vrml/importer.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Gathering the layers of an LOD set into one model (what the exporter does with the
 // document's layers).
-#include "lod_assembly.h"
+#include "openflight/lod_assembly.h"
 #include "model_fixtures.h"
 
 #include <gtest/gtest.h>

@@ -5,11 +5,11 @@
 #include "osg_probe.h"
 #include "test_mesh.h"
 
-#include "core/hausdorff.h"
-#include "core/lod_chain.h"
-#include "flt_writer.h"
-#include "mesh_to_lod_model.h"
-#include "scene_to_mesh.h"
+#include "measure/hausdorff.h"
+#include "lod/lod_chain.h"
+#include "openflight/flt_writer.h"
+#include "convert/mesh_to_lod_model.h"
+#include "convert/scene_to_mesh.h"
 #include "vrml/importer.h"
 
 #include <gtest/gtest.h>

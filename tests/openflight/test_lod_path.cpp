@@ -2,7 +2,7 @@
 // nodes pick the levels (bench/lod_path, used by the paper's Table 1): on a three-level model
 // with known switch distances (0-50-200-1000 from its LOD centre), every frame draws the
 // level whose range holds the camera's distance, and a path across every switch draws them all.
-#include "flt_writer.h"
+#include "openflight/flt_writer.h"
 #include "lod_path.h"
 #include "model_fixtures.h"
 

@@ -1,8 +1,8 @@
 // Every file the writer makes is read back by OpenSceneGraph's OpenFlight loader and
 // checked: LOD nodes, ranges, centers, triangles per level, positions and normals,
 // colors, names, culling and units.
-#include "flt_reader.h"
-#include "flt_writer.h"
+#include "openflight/flt_reader.h"
+#include "openflight/flt_writer.h"
 #include "model_fixtures.h"
 #include "osg_probe.h"
 

@@ -1,8 +1,8 @@
 // Our OpenFlight reader: round trips of the writer's output, files written by
 // OpenSceneGraph, and corrupt or truncated input (errors with offsets, never a crash).
 #include "byte_access.h"
-#include "flt_reader.h"
-#include "flt_writer.h"
+#include "openflight/flt_reader.h"
+#include "openflight/flt_writer.h"
 #include "model_fixtures.h"
 
 #include <gtest/gtest.h>

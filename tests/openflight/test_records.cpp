@@ -1,9 +1,9 @@
 // Byte layout of every record the writer emits, against design.md §7 and the
 // OpenFlight 16.x specification.
 #include "byte_access.h"
-#include "flt_writer.h"
+#include "openflight/flt_writer.h"
 #include "model_fixtures.h"
-#include "records.h"
+#include "openflight/records.h"
 
 #include <gtest/gtest.h>
 

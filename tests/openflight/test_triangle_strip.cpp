@@ -1,6 +1,6 @@
 // Triangles -> one strip -> triangles gives back every triangle once, winding kept.
 #include "model_fixtures.h"
-#include "triangle_strip.h"
+#include "openflight/triangle_strip.h"
 
 #include <gtest/gtest.h>
 

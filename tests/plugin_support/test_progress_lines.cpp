@@ -1,6 +1,6 @@
 // ProgressLines: what reaches MeshLab's callback is one line per step, as meshlabserver
 // prints it (printf("%s") of each message, nothing added).
-#include <progress_lines.h>
+#include "support/progress_lines.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 // within a part and is consistently oriented (outward normals).
 #pragma once
 
-#include "layer_metadata.h"
+#include "mesh/layer_metadata.h"
 
 #include <vcg/complex/complex.h>
 #include <vcg/complex/algorithms/update/bounding.h>

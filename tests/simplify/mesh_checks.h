@@ -2,7 +2,7 @@
 // and benchmarks: folded faces, non-manifold edges, boundary edges.
 #pragma once
 
-#include "core/hausdorff.h"
+#include "measure/hausdorff.h"
 
 #include <vcg/complex/complex.h>
 #include <vcg/space/index/grid_static_ptr.h>

@@ -4,9 +4,9 @@
 #include "cad_meshes.h"
 #include "test_mesh.h"
 
-#include "core/compactness.h"
-#include "core/hausdorff.h"
-#include "core/simplify.h"
+#include "measure/compactness.h"
+#include "measure/hausdorff.h"
+#include "simplify/simplify.h"
 
 #include <gtest/gtest.h>
 

@@ -7,9 +7,9 @@
 
 #include "mesh_checks.h"
 
-#include "core/collapse_halves.h"
-#include "core/hausdorff.h"
-#include "core/run_together.h"
+#include "simplify/collapse_halves.h"
+#include "measure/hausdorff.h"
+#include "support/run_together.h"
 
 #include <gtest/gtest.h>
 

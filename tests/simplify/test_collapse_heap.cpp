@@ -2,7 +2,7 @@
 // heap from any vector (what vcglib's Init leaves), and dropping stale entries.
 #include "test_mesh.h"
 
-#include "core/collapse_heap.h"
+#include "simplify/collapse_heap.h"
 
 #include <vcg/complex/algorithms/local_optimization.h>
 

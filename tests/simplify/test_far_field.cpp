@@ -3,7 +3,7 @@
 // the edges, each edge once.
 #include "test_mesh.h"
 
-#include "core/far_field.h"
+#include "simplify/far_field.h"
 
 #include <vcg/complex/algorithms/update/topology.h>
 

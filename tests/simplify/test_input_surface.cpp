@@ -6,8 +6,8 @@
 #include "simplify_test_util.h"
 #include "test_mesh.h"
 
-#include "core/input_surface.h"
-#include "core/simplify.h"
+#include "measure/input_surface.h"
+#include "simplify/simplify.h"
 
 #include <gtest/gtest.h>
 

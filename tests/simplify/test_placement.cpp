@@ -1,7 +1,7 @@
 // Where a collapse may put its vertex: the quadric's own minimum, and where the merged
 // planes meet in a line (a crease, a cylinder's strips) so that no single minimum exists,
 // the point of that line nearest the edge.
-#include "core/cad_edge_collapse.h"
+#include "simplify/cad_edge_collapse.h"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include "cad_meshes.h"
 #include "test_mesh.h"
 
-#include "core/shading_deviation.h"
+#include "measure/shading_deviation.h"
 
 #include <gtest/gtest.h>
 

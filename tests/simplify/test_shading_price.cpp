@@ -8,7 +8,7 @@
 #include "simplify_test_util.h"
 #include "test_mesh.h"
 
-#include "core/simplify.h"
+#include "simplify/simplify.h"
 
 #include <gtest/gtest.h>
 

@@ -8,8 +8,8 @@
 #include "simplify_test_util.h"
 #include "test_mesh.h"
 
-#include "core/compactness.h"
-#include "core/simplify.h"
+#include "measure/compactness.h"
+#include "simplify/simplify.h"
 
 #include <gtest/gtest.h>
 

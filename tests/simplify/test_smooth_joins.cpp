@@ -6,7 +6,7 @@
 #include "simplify_test_util.h"
 #include "test_mesh.h"
 
-#include "core/simplify.h"
+#include "simplify/simplify.h"
 
 #include <vcg/complex/algorithms/update/topology.h>
 

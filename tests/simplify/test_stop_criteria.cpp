@@ -2,7 +2,7 @@
 // percentage, and the maximum-error bound.
 #include "simplify_test_util.h"
 
-#include "core/hausdorff.h"
+#include "measure/hausdorff.h"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 #include "mesh_checks.h"
 #include "simplify_test_util.h"
 
-#include "core/run_together.h"
-#include "core/simplify.h"
+#include "support/run_together.h"
+#include "simplify/simplify.h"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 #include "simplify_test_util.h"
 #include "test_mesh.h"
 
-#include "core/hausdorff.h"
-#include "core/simplify.h"
+#include "measure/hausdorff.h"
+#include "simplify/simplify.h"
 
 #include <gtest/gtest.h>
 

@@ -5,8 +5,8 @@
 #include "simplify_test_util.h"
 #include "stock_quadric.h"
 
-#include "core/compactness.h"
-#include "core/hausdorff.h"
+#include "measure/compactness.h"
+#include "measure/hausdorff.h"
 
 #include <gtest/gtest.h>
 

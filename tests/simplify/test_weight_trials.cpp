@@ -8,10 +8,10 @@
 #include "simplify_test_util.h"
 #include "test_mesh.h"
 
-#include "core/hausdorff.h"
-#include "core/shading_deviation.h"
-#include "core/simplify.h"
-#include "core/weight_trials.h"
+#include "measure/hausdorff.h"
+#include "measure/shading_deviation.h"
+#include "simplify/simplify.h"
+#include "simplify/weight_trials.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// The tests' vcglib mesh: cadlod::CoreMesh (filter_cadlod/metadata/core_mesh.h), plus PLY
+// The tests' vcglib mesh: cadlod::CoreMesh (lib/mesh/core_mesh.h), plus PLY
 // read/write.
 #pragma once
 
-#include "core_mesh.h"
+#include "mesh/core_mesh.h"
 
 #include <vcg/complex/complex.h>
 #include <wrap/io_trimesh/io_mask.h>

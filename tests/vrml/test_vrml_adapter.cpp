@@ -1,6 +1,6 @@
 // The MeshLab adapter (io_vrml_flt/vrml_import.cpp) on a real CMeshO: part table and
 // per-face part ids in the layer, open options (unit scale, merge, normals), errors.
-#include "layer_metadata.h"
+#include "mesh/layer_metadata.h"
 #include "format_adapters.h"
 
 #include <common/meshmodel.h>

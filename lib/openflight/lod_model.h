@@ -1,0 +1,70 @@
+// The neutral LOD model the OpenFlight writer takes and the reader returns: no MeshLab,
+// no vcglib. A model is a list of levels (one OpenFlight LOD node each); a level is a
+// list of parts (one OpenFlight Object each), each an indexed triangle mesh.
+#pragma once
+
+#include "mesh/part_identity.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cadlod::flt {
+
+// OpenFlight header "vertex coordinate units" codes (byte 62).
+enum class Units : std::uint8_t { Meters = 0, Kilometers = 1, Feet = 4, Inches = 5, NauticalMiles = 8 };
+
+using Vec3d = std::array<double, 3>;
+using Vec3f = std::array<float, 3>;
+using Vec2f = std::array<float, 2>;
+using Triangle = std::array<std::uint32_t, 3>;  // indices into the part's vertex arrays
+using cadlod::Rgba;                             // 0..1
+
+// One Object: the part's identity (Object name in a Long ID record, colour) and its
+// own indexed vertex pool. A part whose faces have different colours (per-face colours of
+// a CAD export) lists one colour per triangle; without that list every face has `color`.
+struct Part : PartIdentity {
+    std::vector<Vec3d> positions;
+    std::vector<Vec3f> normals;  // one per position, or empty
+    std::vector<Vec2f> uvs;      // one per position, or empty
+    std::vector<Triangle> triangles;
+    std::vector<Rgba> triangleColors;  // one per triangle, or empty (all `color`)
+    std::vector<Rgba> vertexColors;    // one per position, or empty: drawn instead of face colours
+
+    bool hasVertexColors() const { return !positions.empty() && vertexColors.size() == positions.size(); }
+
+    bool hasTriangleColors() const { return !triangles.empty() && triangleColors.size() == triangles.size(); }
+    const Rgba& colorOf(std::size_t triangle) const
+    {
+        return hasTriangleColors() ? triangleColors[triangle] : color;
+    }
+
+    bool hasNormals() const { return !positions.empty() && normals.size() == positions.size(); }
+    bool hasUvs() const { return !positions.empty() && uvs.size() == positions.size(); }
+};
+
+struct Level {
+    std::string name;
+    double switchIn = 0.0;   // FAR distance: visible while switchOut <= d < switchIn
+    double switchOut = 0.0;  // NEAR distance
+    Vec3d center{0, 0, 0};
+    std::vector<Part> parts;
+
+    bool hasRange() const { return switchIn > switchOut; }
+    std::size_t triangleCount() const;
+};
+
+struct LodModel {
+    std::string name = "cadlod";
+    Units units = Units::Meters;
+    std::vector<Level> levels;
+
+    std::size_t triangleCount() const;
+};
+
+const char* unitsName(Units units);
+// Accepts the header codes above; false for any other byte.
+bool unitsFromCode(int code, Units& units);
+
+}  // namespace cadlod::flt
