@@ -2,7 +2,8 @@
 # Every output issue 62 holds byte-identical across a restructure, made with the binaries of
 # one build dir (configured with -DCADLOD_BUILD_BENCH=ON, targets cadlod corpus_bench
 # chain_bench stage):
-#   bench/identity/outputs.sh [--quick] [--corpus DIR] BUILD_DIR OUT_DIR
+#   bench/identity/outputs.sh [--quick] [--no-bench] [--corpus DIR] BUILD_DIR OUT_DIR
+# --no-bench: only the conversions and the .mlx route (a build without the bench targets).
 # --quick: the corpus bench's --quick subset (6 parts, 75/95 %) and the chain bench on the
 # demo, the bench assembly/board and three corpus VRML parts, instead of everything.
 # Inputs are copied from this checkout into OUT_DIR/inputs and every command runs in OUT_DIR
@@ -10,21 +11,24 @@
 # carry the paths). Compare two OUT_DIRs with bench/identity/compare.sh.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-quick=0
+quick=0 bench=1
 corpus="${CADLOD_CORPUS:-$ROOT/.cache/cad-corpus}"
 while [ $# -gt 2 ]; do
   case "$1" in
     --quick) quick=1; shift ;;
+    --no-bench) bench=0; shift ;;
     --corpus) corpus="$2"; shift 2 ;;
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
-[ $# -eq 2 ] || { echo "usage: $0 [--quick] [--corpus DIR] BUILD_DIR OUT_DIR" >&2; exit 2; }
+[ $# -eq 2 ] || { echo "usage: $0 [--quick] [--no-bench] [--corpus DIR] BUILD_DIR OUT_DIR" >&2; exit 2; }
 build="$(realpath "$1")"
 out="$2"
 corpus="$(realpath "$corpus")"
 [ -f "$corpus/manifest.txt" ] || bash "$ROOT/scripts/make_cad_corpus.sh" "$corpus"
-for exe in cli/cadlod bench/simplify/corpus_bench bench/lod/chain_bench stage/bin/meshlabserver; do
+exes=(cli/cadlod stage/bin/meshlabserver)
+[ "$bench" = 1 ] && exes+=(bench/simplify/corpus_bench bench/lod/chain_bench)
+for exe in "${exes[@]}"; do
   [ -x "$build/$exe" ] || { echo "missing $build/$exe (build cadlod corpus_bench chain_bench stage)" >&2; exit 1; }
 done
 mkdir -p "$out/inputs" "$out/chains"
@@ -54,6 +58,7 @@ for mlx in inputs/*.mlx; do
     -i "$input" -s "$mlx" -o "mlx_$name.flt" > "mlx_$name.log" 2>&1
 done
 
+[ "$bench" = 1 ] || { step done; exit 0; }
 step chains
 wrl=(inputs/cad_assembly.wrl.gz)
 if [ "$quick" = 1 ]; then
