@@ -37,7 +37,8 @@ cp "$ROOT/docs/sample/cad_assembly.wrl.gz" "$ROOT/docs/sample/shaft.wrl" "$corpu
    "$ROOT"/docs/examples/*.mlx inputs/
 cadlod="$build/cli/cadlod"
 step() { printf '== %-8s %s\n' "$1" "$(date -u +%T)"; }
-timed() { local t0=$SECONDS; "$@"; echo "   $(( SECONDS - t0 )) s"; }
+exec 3>&1  # the timings go here, past the commands' redirections to their logs
+timed() { local t0=$SECONDS; "$@"; echo "   $(( SECONDS - t0 )) s" >&3; }
 
 step convert
 # The demo as scripts/demo.sh runs it, then convert --report on three inputs.
