@@ -499,7 +499,7 @@ $(fig6_summary "$e1")
 
 Compactness is Guéziec's 4√3·A/(l0²+l1²+l2²) (1 = equilateral); the Hausdorff distance is
 symmetric, sampled on every vertex plus as many area-uniform points per side as the input
-has faces (\`filter_cadlod/core/hausdorff.h\`), in model units (mm), as a share of the
+has faces (\`lib/measure/hausdorff.h\`), in model units (mm), as a share of the
 bounding-box diagonal in brackets.
 
 ![compactness histogram](img/paper-fig6-compactness.png)
