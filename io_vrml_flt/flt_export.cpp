@@ -18,13 +18,6 @@
 namespace cadlod {
 namespace {
 
-// meshlabserver never prints an IO plugin's log, so every report also goes to stderr.
-void report(MeshIOInterface& plugin, GLLogStream::Levels level, const QString& text)
-{
-    plugin.Log(level, text.toStdString());
-    std::fprintf(stderr, "io_vrml_flt: %s\n", qUtf8Printable(text));
-}
-
 const char* const kUnits = "units";
 const char* const kDrawType = "drawType";
 const char* const kObjects = "objects";

@@ -16,13 +16,6 @@
 namespace cadlod {
 namespace {
 
-// meshlabserver never prints an IO plugin's log, so every report also goes to stderr.
-void report(MeshIOInterface& plugin, GLLogStream::Levels level, const QString& text)
-{
-    plugin.Log(level, text.toStdString());
-    std::fprintf(stderr, "io_vrml_flt: %s\n", qUtf8Printable(text));
-}
-
 const char* const kLevel = "level";
 
 void fillLayer(const flt::Level& level, MeshModel& m, int& mask)

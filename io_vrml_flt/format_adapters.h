@@ -10,8 +10,22 @@
 #include <QThread>
 
 #include <algorithm>
+#include <cstdio>
+#include <string>
 
 namespace cadlod {
+
+// Logs through the plugin and to stderr: meshlabserver's -i path never gives an IO plugin a
+// log (MeshLabInterface::Log is then a no-op), so a report there would be lost.
+inline void report(MeshIOInterface& plugin, GLLogStream::Levels level, const std::string& text)
+{
+    plugin.Log(level, text);
+    std::fprintf(stderr, "io_vrml_flt: %s\n", text.c_str());
+}
+inline void report(MeshIOInterface& plugin, GLLogStream::Levels level, const QString& text)
+{
+    report(plugin, level, text.toStdString());
+}
 
 // Forwards progress to MeshLab's callback and ends with a message that stays in the status
 // bar. MeshLab 2020.09's callback drops a call that comes within 100 ms of the one before

@@ -24,14 +24,6 @@ constexpr const char* kNormals = "vrmlNormals";
 constexpr const char* kUpAxis = "vrmlUpAxis";
 constexpr const char* kKicadUnits = "vrmlKicadUnits";
 
-// meshlabserver's -i path never gives an IO plugin a log (MeshLabInterface::Log is then
-// a no-op), so every report also goes to stderr.
-void report(MeshIOInterface& plugin, GLLogStream::Levels level, const std::string& text)
-{
-    plugin.Log(level, text);
-    std::fprintf(stderr, "io_vrml_flt: %s\n", text.c_str());
-}
-
 void logDiagnostics(MeshIOInterface& plugin, const vrml::Diagnostics& diag)
 {
     if (diag.total() == 0) return;
@@ -111,7 +103,7 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
                   m.cm.vn, merged, scene.stats.shapes, scene.stats.skippedFaces, built.facesRepeatingVertex,
                   scene.stats.lineSets + scene.stats.pointSets, scene.stats.inlinesLoaded, scene.stats.bytesRead / 1e6,
                   seconds, parsedMs / 1000.0, scene.stats.bytesRead / 1e6 / seconds);
-    report(plugin, GLLogStream::FILTER, line);
+    report(plugin, GLLogStream::FILTER, std::string(line));
     report(plugin, GLLogStream::FILTER, "VRML import of " + fileName.toStdString() + ": " +
                                             result.assumed.describe(options.unitScale));
     logDiagnostics(plugin, scene.diagnostics);
