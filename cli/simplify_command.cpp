@@ -7,7 +7,7 @@
 #include "output_file.h"
 #include "progress_bar.h"
 
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 
 #include <memory>
 
@@ -56,7 +56,7 @@ void runSimplify(const SimplifyArgs& a)
             std::fprintf(stderr, "cadlod: %s: %d faces, written unsimplified (--reduction 0)\n", a.output.c_str(), m.fn);
         return;
     }
-    const SimplifyStats stats = simplify(m, paramsOf(a), progress::callback, runOnWorkers);
+    const SimplifyStats stats = bestOfTrials(m, paramsOf(a), progress::callback, runOnWorkers);
     if (!stats.ok)
         throw InputError(a.input + ": " + stats.message);
     saveMesh(a.output, m, saving);

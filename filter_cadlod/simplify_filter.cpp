@@ -3,7 +3,7 @@
 #include "simplify_parameters.h"
 
 #include "measure/compactness.h"
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 #include "mesh/layer_metadata.h"
 
 #include <vcg/complex/algorithms/clean.h>
@@ -62,7 +62,7 @@ bool cadSimplify(MeshFilterInterface& plugin, MeshModel& m, const RichParameterL
     m.updateDataMask(MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK);
     const CompactnessStats before = meshCompactness(m.cm);
     // A mesh of a few hundred thousand faces or more collapses on two cores (collapse_halves.h).
-    const SimplifyStats s = simplify(m.cm, params, cb, runOnTwoThreads);
+    const SimplifyStats s = bestOfTrials(m.cm, params, cb, runOnTwoThreads);
     if (!s.ok) {
         error = QString("CAD Quadric Edge Collapse on %1: %2").arg(m.label(), QString::fromStdString(s.message));
         plugin.Log("%s", qUtf8Printable(error));

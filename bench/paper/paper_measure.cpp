@@ -11,7 +11,7 @@
 #include "measure/compactness.h"
 #include "measure/hausdorff.h"
 #include "lod/lod_builder.h"
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 #include "openflight/flt_writer.h"
 
 #include "test_mesh.h"
@@ -190,7 +190,7 @@ int simplify(int argc, char** argv)
     prepareForCollapse(m);
     cadlod::SimplifyParams p;
     p.reductionPerc = std::atof(argv[4]);
-    const cadlod::SimplifyStats s = cadlod::simplify(m, p);
+    const cadlod::SimplifyStats s = cadlod::bestOfTrials(m, p);
     if (!s.ok) {
         std::fprintf(stderr, "paper_measure: %s\n", s.message.c_str());
         return 1;

@@ -44,7 +44,7 @@
 
 #include "measure/compactness.h"
 #include "measure/hausdorff.h"
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 
 #include <vcg/complex/algorithms/update/normal.h>
 
@@ -164,7 +164,7 @@ void simplifyWith(const std::string& tool, TestMesh& m, int target, double& seco
     if (tool == "cadlod") {
         cadlod::SimplifyParams p = cadlodParams;
         p.targetFaces = target;
-        const cadlod::SimplifyStats stats = cadlod::simplify(m, p);
+        const cadlod::SimplifyStats stats = cadlod::bestOfTrials(m, p);
         if (!logAs.empty())
             printSimplifyLog(logAs, stats);
     } else if (tool == "vcglib") {

@@ -18,7 +18,7 @@
 
 #include "measure/compactness.h"
 #include "measure/hausdorff.h"
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -122,7 +122,7 @@ void simplifyWith(const std::string& tool, TestMesh& m, int target, double& seco
         p.targetFaces = target;
         if (tool == "cadlod-whole")
             p.halvesMinFaces = 0;
-        cadlod::simplify(m, p, nullptr, tool == "cadlod-2t" ? cadlod::RunTogether(cadlod::runOnTwoThreads) : cadlod::RunTogether(cadlod::runInSequence));
+        cadlod::bestOfTrials(m, p, nullptr, tool == "cadlod-2t" ? cadlod::RunTogether(cadlod::runOnTwoThreads) : cadlod::RunTogether(cadlod::runInSequence));
     } else if (tool == "vcglib") {
         cadlod::test::stockSimplify(m, target, cadlod::test::stockDefaults<TestMesh>());
     } else if (tool == "meshopt") {

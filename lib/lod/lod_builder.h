@@ -10,7 +10,7 @@
 #include "mesh/layer_metadata.h"
 #include "lod/lod_plan.h"
 #include "support/run_together.h"
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 
 #include <vcg/complex/append.h>
 
@@ -329,7 +329,7 @@ LodSetResult buildLodSet(MeshType& original, const LodSetOptions& options,
             progress(100 * (k - 1) / count, (k <= count ? "Simplifying level " + std::to_string(k)
                                                           : "Measuring level " + std::to_string(count)).c_str());
         together([&] { if (previous) measure(*previous); },
-                 [&] { if (mesh) stats = simplify(*mesh, params, nullptr, together); });
+                 [&] { if (mesh) stats = bestOfTrials(*mesh, params, nullptr, together); });
         if (previous)
             addLevel(*previous, k - 1);
         if (!mesh)

@@ -12,7 +12,6 @@
 #include "simplify/non_manifold_split.h"
 #include "simplify/simplify_params.h"
 #include "simplify/tunnel_cut.h"
-#include "simplify/weight_trials.h"
 
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/selection.h>
@@ -423,15 +422,33 @@ SimplifyStats simplifyWith(MeshType& m, const SimplifyParams& params, SimplifySt
 
 namespace detail {
 
-// vcglib's bit flags of one mesh type, taken for a scope and given back at its end.
+// Whether `m` and `params` ask for a simplification, with stats.message telling why not (bad
+// parameters, an unfit or empty mesh, a target not below the mesh). Fills the "before" counts
+// and the face target either way.
 template <class MeshType>
-struct TakenFeatureBits {
-    FeatureBits bits = takeFeatureBits<MeshType>();
-    TakenFeatureBits() = default;
-    TakenFeatureBits(const TakenFeatureBits&) = delete;
-    TakenFeatureBits& operator=(const TakenFeatureBits&) = delete;
-    ~TakenFeatureBits() { giveBackFeatureBits<MeshType>(bits); }
-};
+bool readyToSimplify(const MeshType& m, const SimplifyParams& params, SimplifyStats& stats)
+{
+    stats.facesBefore = stats.facesAfter = m.fn;
+    stats.verticesBefore = stats.verticesAfter = m.vn;
+    if (!detail::validateParams(params, stats.message))
+        return false;
+    if (!simplifierRequirementsMet(m)) {
+        stats.message = "the mesh lacks VF adjacency or per-vertex marks";
+        return false;
+    }
+    if (m.fn == 0) {
+        stats.message = "empty mesh: no faces to simplify";
+        return false;
+    }
+    stats.targetFaces = targetFaceCount(params, m.fn);
+    stats.ok = true;
+    if (stats.targetFaces >= m.fn && params.maxError <= 0) {
+        stats.message = "target of " + std::to_string(stats.targetFaces) + " faces is not below the " +
+                        std::to_string(m.fn) + " faces of the mesh: nothing to do";
+        return false;
+    }
+    return true;
+}
 
 // simplify(), its collapses marking features with `sharedBits` (null: bits of its own).
 template <class MeshType>
@@ -439,56 +456,18 @@ SimplifyStats simplifySharing(MeshType& m, const SimplifyParams& params, vcg::Ca
                               const RunTogether& together, const FeatureBits* sharedBits)
 {
     const auto start = std::chrono::steady_clock::now();
-
     SimplifyStats stats;
-    stats.facesBefore = stats.facesAfter = m.fn;
-    stats.verticesBefore = stats.verticesAfter = m.vn;
-    if (!detail::validateParams(params, stats.message))
+    if (!readyToSimplify(m, params, stats))
         return stats;
-    if (!simplifierRequirementsMet(m)) {
-        stats.message = "the mesh lacks VF adjacency or per-vertex marks";
-        return stats;
-    }
-    if (m.fn == 0) {
-        stats.message = "empty mesh: no faces to simplify";
-        return stats;
-    }
-    stats.targetFaces = targetFaceCount(params, m.fn);
-    stats.ok = true;
-    if (stats.targetFaces >= m.fn && params.maxError <= 0) {
-        stats.message = "target of " + std::to_string(stats.targetFaces) + " faces is not below the " +
-                        std::to_string(m.fn) + " faces of the mesh: nothing to do";
-        return stats;
-    }
-
-    SimplifyParams chosen = params;
-    if (weightTrialsApply(m, params)) {
-        // The trials run two at a time on copies (`together`); vcglib's pool of bit flags is
-        // one per mesh type and process, so the copies share one set taken here.
-        const TakenFeatureBits<CoreMesh> trialBits;
-        // Distances within the flat tolerance move no plane a viewer could see: the trials'
-        // pick does not tell them apart (an exact result then wins on slivers alone).
-        const double diagonal = liveDiagonal(m);
-        const double distanceFloor = params.flatTolerance * diagonal;
-        const std::vector<WeightTrial> trials = runWeightTrials(
-            m, params,
-            [&](CoreMesh& copy, const SimplifyParams& p) {
-                return simplifySharing(copy, p, nullptr, runInSequence, &trialBits.bits);
-            },
-            progress, together, distanceFloor);
-        const std::size_t best = keptTrial(trials, distanceFloor);
-        if (best < trials.size())
-            chosen = trialParams(params, trials[best].weights);
-        stats.weightTrials = detail::describeTrials(trials, best, diagonal, params);
-    }
-    return simplifyWith(m, chosen, stats, start, progress, together, sharedBits);
+    return simplifyWith(m, params, stats, start, progress, together, sharedBits);
 }
 
 }  // namespace detail
 
-// Simplifies `m` in place. `progress` may be null. `together` runs two tasks at once, or
+// Simplifies `m` in place, once, with `params` as they are (bestOfTrials, best_of_trials.h, first tries
+// several weights on copies). `progress` may be null. `together` runs two tasks at once, or
 // one after the other (the result is the same): the two halves of a large mesh
-// (collapse_halves.h), the weight trials of a small one (weight_trials.h).
+// (collapse_halves.h).
 template <class MeshType>
 SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackPos* progress = nullptr,
                        const RunTogether& together = runInSequence)

@@ -6,7 +6,7 @@
 
 #include "measure/compactness.h"
 #include "measure/hausdorff.h"
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 
 #include <gtest/gtest.h>
 
@@ -41,7 +41,7 @@ Reduction reduceWith(const Make& make, const SimplifyParams& p)
     TestMesh input, m;
     buildInputAndCopy(make, input, m);
     Reduction r;
-    r.stats = simplify(m, p);
+    r.stats = bestOfTrials(m, p);
     EXPECT_TRUE(r.stats.ok) << r.stats.message;
     r.faces = m.fn;
     r.slivers = meshCompactness(m).shareBelow01;

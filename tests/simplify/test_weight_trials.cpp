@@ -10,7 +10,7 @@
 
 #include "measure/hausdorff.h"
 #include "measure/shading_deviation.h"
-#include "simplify/simplify.h"
+#include "simplify/best_of_trials.h"
 #include "simplify/weight_trials.h"
 
 #include <gtest/gtest.h>
@@ -41,7 +41,7 @@ std::string trialsLog(const std::function<void(CadBuilder&)>& make, const Simpli
 {
     TestMesh input, m;
     buildInputAndCopy(make, input, m);
-    const SimplifyStats s = simplify(m, p);
+    const SimplifyStats s = bestOfTrials(m, p);
     EXPECT_TRUE(s.ok) << s.message;
     return s.weightTrials;
 }
@@ -97,9 +97,9 @@ TEST(WeightTrials, ALongCylinderOutweighsSmallCreasedDetails)
     buildInputAndCopy(threadedRoller, input, without);
     SimplifyParams p;
     p.reductionPerc = 90;
-    const SimplifyStats s = simplify(with, p);
+    const SimplifyStats s = bestOfTrials(with, p);
     p.weightTrialsMaxFaces = 0;
-    simplify(without, p);
+    bestOfTrials(without, p);
     EXPECT_EQ(with.fn, without.fn);
     EXPECT_EQ(s.weightTrials.find("kept 0.005"), std::string::npos) << s.weightTrials;
     const detail::ClosestFace<TestMesh> toInput(input);
@@ -147,7 +147,7 @@ TEST(WeightTrials, TheClosestTrialWinsUnlessItMakesSlivers)
     EXPECT_EQ(closestTrial({}), 0u);
 }
 
-// Below the distance floor (the flat tolerance, in simplify()) distances count alike: a
+// Below the distance floor (the flat tolerance, in bestOfTrials()) distances count alike: a
 // result a hair from exact is not a thousand times farther than an exact one, and slivers
 // decide between them.
 TEST(WeightTrials, DistancesBelowTheFloorCountAlike)
@@ -382,7 +382,7 @@ TEST(WeightTrials, OneTrialKeepsSmoothJoinsAtFarTargets)
         makeShaft(m, 48);
         SimplifyParams p;
         p.reductionPerc = percent;
-        const SimplifyStats s = simplify(m, p);
+        const SimplifyStats s = bestOfTrials(m, p);
         ASSERT_TRUE(s.ok) << s.message;
         EXPECT_EQ(s.weightTrials.find("keeping smooth joins") != std::string::npos, percent >= 90) << s.weightTrials;
     }
@@ -415,10 +415,10 @@ TEST(WeightTrials, OnlySmallMeshesWithAFaceTarget)
     q.weightTrialsMaxFaces = 0;
     q.reductionPerc = 75;
     q.maxError = 0;
-    EXPECT_TRUE(simplify(m, q).weightTrials.empty());
+    EXPECT_TRUE(bestOfTrials(m, q).weightTrials.empty());
 }
 
-// A trial's faces turned over count wherever simplify() checks its collapses against the
+// A trial's faces turned over count wherever bestOfTrials() checks its collapses against the
 // input surface: down to the far field's floor, the whole 5 % of the faces included. The
 // chip with eight bent leads (2 052 faces) toward 102 faces, under 5 % (102.6) but not under
 // the floor: each trial's count is the bench's own count (mesh_checks.h) on the same run,
@@ -508,4 +508,47 @@ TEST(WeightTrials, TheClosestRunsAgainSliversFirst)
         EXPECT_GT(again.hausdorff, 0.0);
         EXPECT_TRUE(again.reached);
     }
+}
+
+namespace {
+
+// The live vertex positions of `m` in memory order.
+std::vector<vcg::Point3f> livePositions(const TestMesh& m)
+{
+    std::vector<vcg::Point3f> positions;
+    for (const auto& v : m.vert)
+        if (!v.IsD())
+            positions.push_back(v.cP());
+    return positions;
+}
+
+}  // namespace
+
+// simplify() simplifies once, with the caller's weights, where bestOfTrials tries several:
+// on the chip at 90 % the trials run and change the result, and simplify()'s result is the
+// one bestOfTrials gives with the trials turned off, to the last coordinate.
+TEST(WeightTrials, SimplifyRunsOnceWhereBestOfTrialsTriesWeights)
+{
+    TestMesh input, once, best, untried;
+    buildInputAndCopy(chip, input, once);
+    copyMesh(best, input);
+    copyMesh(untried, input);
+    SimplifyParams p;
+    p.reductionPerc = 90;
+    ASSERT_TRUE(weightTrialsApply(input, p));
+
+    const SimplifyStats s = simplify(once, p);
+    ASSERT_TRUE(s.ok) << s.message;
+    EXPECT_TRUE(s.weightTrials.empty()) << s.weightTrials;
+
+    SimplifyParams off = p;
+    off.weightTrialsMaxFaces = 0;
+    ASSERT_TRUE(bestOfTrials(untried, off).ok);
+    EXPECT_EQ(once.fn, untried.fn);
+    EXPECT_EQ(livePositions(once), livePositions(untried));
+
+    const SimplifyStats t = bestOfTrials(best, p);
+    ASSERT_TRUE(t.ok) << t.message;
+    EXPECT_FALSE(t.weightTrials.empty());
+    EXPECT_NE(livePositions(once), livePositions(best)) << "the trials kept the caller's weights: the chip no longer tells";
 }
