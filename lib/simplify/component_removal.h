@@ -19,6 +19,7 @@
 #pragma once
 
 #include "simplify/cad_edge_collapse.h"
+#include "simplify/priced_operation.h"
 #include "mesh/components.h"
 #include "simplify/rest_of_model.h"
 
@@ -32,15 +33,12 @@
 namespace cadlod {
 
 template <class MeshType>
-class ComponentRemoval : public vcg::LocalModification<MeshType>
+class ComponentRemoval : public PricedOperation<MeshType>
 {
 public:
-    using VertexType = typename MeshType::VertexType;
-    using FaceType = typename MeshType::FaceType;
-    using ScalarType = typename MeshType::ScalarType;
-    using HeapType = typename vcg::LocalOptimization<MeshType>::HeapType;
-    using HeapElem = typename vcg::LocalOptimization<MeshType>::HeapElem;
-    using Context = CollapseContext<MeshType>;
+    using Base = PricedOperation<MeshType>;
+    using typename Base::VertexType, typename Base::FaceType, typename Base::ScalarType, typename Base::HeapType,
+        typename Base::HeapElem, typename Base::Context;
 
     // Adds one removal per component but the largest (unless the context says the model's
     // largest is in another mesh) to `heap` (not re-heapified). Components that touch (a
@@ -92,17 +90,14 @@ public:
         }
     }
 
-    vcg::ModifierType IsOfType() override { return vcg::TriEdgeCollapseOp; }
     bool IsUpToDate() const override { return liveVertex() != nullptr; }
     bool IsFeasible(vcg::BaseParameterClass*) override { return true; }
-    ScalarType ComputePriority(vcg::BaseParameterClass*) override { return priority_; }
-    ScalarType Priority() const override { return priority_; }
     void UpdateHeap(HeapType&, vcg::BaseParameterClass*) override {}
 
     // The component as it is now (collapses inside it never join it to another one).
     void Execute(MeshType& m, vcg::BaseParameterClass* pp) override
     {
-        Context& ctx = *static_cast<Context*>(pp);
+        Context& ctx = this->contextOf(pp);
         Component<MeshType> c;
         c.faces = facesConnectedTo(m, vertices_);
         if (ctx.farField)
@@ -149,8 +144,8 @@ private:
 
     ComponentRemoval(std::vector<VertexType*> vertices, int pieces, double size, double distance, std::string name,
                      bool named, ScalarType priority)
-        : vertices_(std::move(vertices)), pieces_(pieces), size_(size), distance_(distance), name_(std::move(name)),
-          named_(named), priority_(priority)
+        : Base(priority), vertices_(std::move(vertices)), pieces_(pieces), size_(size), distance_(distance), name_(std::move(name)),
+          named_(named)
     {
     }
 
@@ -200,7 +195,6 @@ private:
     double distance_;  // removal distance: the size, or the gap it leaves if wider
     std::string name_;
     bool named_;  // name_ is a CAD part's, not "component N"
-    ScalarType priority_;
 };
 
 }  // namespace cadlod

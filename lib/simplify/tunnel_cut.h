@@ -23,6 +23,7 @@
 #pragma once
 
 #include "simplify/cad_edge_collapse.h"
+#include "simplify/priced_operation.h"
 #include "simplify/collapse_heap.h"
 #include "mesh/components.h"
 #include "mesh/layer_metadata.h"
@@ -105,15 +106,12 @@ void reserveTunnelCuts(MeshType& m, CollapseContext<MeshType>& ctx)
 }
 
 template <class MeshType>
-class TunnelCut : public vcg::LocalModification<MeshType>
+class TunnelCut : public PricedOperation<MeshType>
 {
 public:
-    using VertexType = typename MeshType::VertexType;
-    using FaceType = typename MeshType::FaceType;
-    using ScalarType = typename MeshType::ScalarType;
-    using HeapType = typename vcg::LocalOptimization<MeshType>::HeapType;
-    using HeapElem = typename vcg::LocalOptimization<MeshType>::HeapElem;
-    using Context = CollapseContext<MeshType>;
+    using Base = PricedOperation<MeshType>;
+    using typename Base::VertexType, typename Base::FaceType, typename Base::ScalarType, typename Base::HeapType,
+        typename Base::HeapElem, typename Base::Context;
     using VFIterator = vcg::face::VFIterator<FaceType>;
     using Corner = std::pair<FaceType*, int>;  // a face and the index of the loop vertex in it
 
@@ -144,9 +142,6 @@ public:
         }
     }
 
-    vcg::ModifierType IsOfType() override { return vcg::TriEdgeCollapseOp; }
-    ScalarType ComputePriority(vcg::BaseParameterClass*) override { return priority_; }
-    ScalarType Priority() const override { return priority_; }
 
     // Out of date when a loop vertex was deleted or was the survivor of a collapse since.
     bool IsUpToDate() const override
@@ -163,14 +158,14 @@ public:
     // collapses squeeze and removals take anyway.
     bool IsFeasible(vcg::BaseParameterClass* pp) override
     {
-        Context& ctx = *static_cast<Context*>(pp);
+        Context& ctx = this->contextOf(pp);
         return ctx.spareVertices.size() >= 3 && ctx.spareFaces.size() >= 2 && trace(loop_, ctx, traced_) &&
                !separates(traced_, ctx);
     }
 
     void Execute(MeshType& m, vcg::BaseParameterClass* pp) override
     {
-        Context& ctx = *static_cast<Context*>(pp);
+        Context& ctx = this->contextOf(pp);
         const Loop& loop = traced_;
         // The left side (the faces holding the loop's edges in its direction) moves to
         // copies of the loop's vertices; each side gets a cap facing away from it.
@@ -212,7 +207,7 @@ private:
     };
 
     TunnelCut(std::array<VertexType*, 3> loop, int mark, ScalarType priority)
-        : loop_(loop), madeAt_(mark), priority_(priority)
+        : Base(priority), loop_(loop), madeAt_(mark)
     {
     }
 
@@ -426,7 +421,6 @@ private:
     Loop traced_;                         // by IsFeasible, for Execute
     std::array<VertexType*, 3> copies_{};
     int madeAt_;
-    ScalarType priority_;
 };
 
 }  // namespace cadlod
