@@ -17,7 +17,7 @@
 #include "lod/lod_builder.h"  // detail::copyWithParts
 #include "simplify/rest_of_model.h"
 #include "support/run_together.h"
-#include "simplify/simplify.h"
+#include "simplify/simplify_impl.h"
 
 #include <vcg/complex/append.h>
 

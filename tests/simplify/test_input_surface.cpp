@@ -4,6 +4,8 @@
 #include "cad_meshes.h"
 #include "mesh_checks.h"
 #include "simplify_test_util.h"
+
+#include "simplify/simplify_impl.h"
 #include "test_mesh.h"
 
 #include "measure/input_surface.h"

@@ -4,6 +4,8 @@
 // input and on a partly simplified mesh (moved vertices, merged quadrics and features).
 #include "simplify_test_util.h"
 
+#include "simplify/simplify_impl.h"
+
 #include <gtest/gtest.h>
 
 #include <limits>

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vcg/complex/algorithms/edge_collapse.h>
+
 #include <algorithm>
 
 #include <cmath>

@@ -4,7 +4,7 @@
 // robot's chain). The loop must end there, and still run what is left after the dropping.
 #include "test_mesh.h"
 
-#include "simplify/simplify.h"
+#include "simplify/simplify_impl.h"
 
 #include <gtest/gtest.h>
 

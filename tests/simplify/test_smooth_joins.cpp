@@ -6,6 +6,7 @@
 #include "simplify_test_util.h"
 #include "test_mesh.h"
 
+#include "mesh/crease_fans.h"
 #include "simplify/best_of_trials.h"
 
 #include <vcg/complex/algorithms/update/topology.h>
