@@ -1,5 +1,7 @@
 #include "openflight/flt_reader.h"
 
+#include "openflight/record_stream.h"
+
 #include "openflight/byte_reader.h"
 #include "openflight/records.h"
 #include "openflight/triangle_strip.h"
@@ -47,8 +49,6 @@ struct LastPrimary {
     Rgba color{1, 1, 1, 1};
 };
 
-std::string opcodeText(std::uint16_t op) { return "opcode " + std::to_string(op); }
-
 std::string hex32(std::uint32_t v)
 {
     char text[11];
@@ -60,7 +60,7 @@ class Reader {
 public:
     Reader(const std::uint8_t* data, std::size_t size, LodModel& model, ReadStats& stats,
            const ReadOptions& options)
-        : data_(data), size_(size), model_(model), stats_(stats), options_(options)
+        : records_(data, size), size_(size), model_(model), stats_(stats), options_(options)
     {
         palette_.fill({1, 1, 1, 1});
         stack_.emplace_back();
@@ -73,7 +73,10 @@ public:
             std::uint16_t op = 0;
             std::size_t next = 0;
             std::vector<std::uint8_t> body;
-            if (!nextRecord(pos, op, body, next, error))
+            std::size_t continuations = 0;
+            const bool read = records_.next(pos, op, body, next, continuations, error);
+            stats_.records += continuations;
+            if (!read)
                 return false;
             if (pos == 0 && op != opcode::Header) {
                 error = "not an OpenFlight file: the first record (offset 0) has " + opcodeText(op) +
@@ -114,50 +117,6 @@ public:
     }
 
 private:
-    // Reads the record at `pos`, gluing Continuation records onto variable-length ones.
-    bool nextRecord(std::size_t pos, std::uint16_t& op, std::vector<std::uint8_t>& body, std::size_t& next,
-                    std::string& error)
-    {
-        std::size_t length = 0;
-        if (!recordAt(pos, op, length, error))
-            return false;
-        body.assign(data_ + pos + 4, data_ + pos + length);
-        next = pos + length;
-        if (op != opcode::LocalVertexPool && op != opcode::MeshPrimitive)
-            return true;
-        while (next + 4 <= size_ && (data_[next] << 8 | data_[next + 1]) == opcode::Continuation) {
-            std::uint16_t cop = 0;
-            if (!recordAt(next, cop, length, error))
-                return false;
-            body.insert(body.end(), data_ + next + 4, data_ + next + length);
-            next += length;
-            ++stats_.records;
-        }
-        return true;
-    }
-
-    bool recordAt(std::size_t pos, std::uint16_t& op, std::size_t& length, std::string& error) const
-    {
-        if (size_ - pos < 4) {
-            error = "truncated file: " + std::to_string(size_ - pos) + " byte(s) left at offset " +
-                    std::to_string(pos) + ", a record header needs 4";
-            return false;
-        }
-        op = std::uint16_t(data_[pos] << 8 | data_[pos + 1]);
-        length = std::size_t(data_[pos + 2] << 8 | data_[pos + 3]);
-        if (length < 4) {
-            error = "corrupt record at offset " + std::to_string(pos) + " (" + opcodeText(op) + "): length " +
-                    std::to_string(length) + " is shorter than the 4-byte record header";
-            return false;
-        }
-        if (length > size_ - pos) {
-            error = "truncated record at offset " + std::to_string(pos) + " (" + opcodeText(op) + "): " +
-                    std::to_string(length) + " bytes announced, " + std::to_string(size_ - pos) + " left in the file";
-            return false;
-        }
-        return true;
-    }
-
     bool handle(std::uint16_t op, const std::vector<std::uint8_t>& body, std::size_t pos, std::string& error)
     {
         ByteReader in(body.data(), body.size());
@@ -533,31 +492,6 @@ private:
         return true;
     }
 
-    static std::vector<Triangle> primitiveTriangles(std::int16_t type, const std::vector<std::uint32_t>& v)
-    {
-        std::vector<Triangle> out;
-        auto add = [&out](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-            if (a != b && b != c && a != c)
-                out.push_back({a, b, c});
-        };
-        switch (type) {
-        case 1: return stripTriangles(v);
-        case 2:
-        case 4:
-            for (std::size_t i = 1; i + 1 < v.size(); ++i)
-                add(v[0], v[i], v[i + 1]);
-            break;
-        case 3:
-            for (std::size_t i = 0; i + 3 < v.size(); i += 2) {
-                add(v[i], v[i + 1], v[i + 3]);
-                add(v[i], v[i + 3], v[i + 2]);
-            }
-            break;
-        default: break;
-        }
-        return out;
-    }
-
     bool readMeshPrimitive(ByteReader& in, std::size_t pos, std::string& error)
     {
         Frame& f = stack_.back();
@@ -618,7 +552,7 @@ private:
         }
     }
 
-    const std::uint8_t* data_;
+    RecordStream records_;
     std::size_t size_;
     LodModel& model_;
     ReadStats& stats_;

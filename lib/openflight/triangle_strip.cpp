@@ -96,4 +96,29 @@ std::vector<Triangle> stripTriangles(const std::vector<std::uint32_t>& strip)
     return triangles;
 }
 
+std::vector<Triangle> primitiveTriangles(std::int16_t type, const std::vector<std::uint32_t>& v)
+{
+    std::vector<Triangle> out;
+    auto add = [&out](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        if (a != b && b != c && a != c)
+            out.push_back({a, b, c});
+    };
+    switch (type) {
+    case 1: return stripTriangles(v);
+    case 2:
+    case 4:
+        for (std::size_t i = 1; i + 1 < v.size(); ++i)
+            add(v[0], v[i], v[i + 1]);
+        break;
+    case 3:
+        for (std::size_t i = 0; i + 3 < v.size(); i += 2) {
+            add(v[i], v[i + 1], v[i + 3]);
+            add(v[i], v[i + 3], v[i + 2]);
+        }
+        break;
+    default: break;
+    }
+    return out;
+}
+
 }  // namespace cadlod::flt

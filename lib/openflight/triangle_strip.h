@@ -17,4 +17,8 @@ std::vector<std::uint32_t> stitchedStrip(const std::vector<Triangle>& triangles)
 // The non-degenerate triangles of a strip, in order, with their original winding.
 std::vector<Triangle> stripTriangles(const std::vector<std::uint32_t>& strip);
 
+// The non-degenerate triangles of a Mesh Primitive record of `type`: a triangle strip (1), a
+// fan (2), a quadrilateral strip (3) or a polygon (4, fanned); none for another type.
+std::vector<Triangle> primitiveTriangles(std::int16_t type, const std::vector<std::uint32_t>& indices);
+
 }  // namespace cadlod::flt
