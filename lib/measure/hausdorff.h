@@ -1,8 +1,9 @@
 // Symmetric Hausdorff distance between two vcglib triangle meshes, sampled the way
 // MeshLab's "Hausdorff Distance" filter does: every vertex of the sampled mesh plus
 // area-uniform random points on its faces (fixed seed: same meshes, same numbers), each
-// measured to the closest point of the other mesh through a uniform grid. Needs no
-// normals, marks or adjacency; deleted elements are ignored.
+// measured to the closest point of the other mesh, found through a bounding-volume tree of
+// its faces (triangle_tree.h). Needs no normals, marks or adjacency; deleted elements are
+// ignored.
 #pragma once
 
 #include "support/run_together.h"
@@ -193,9 +194,9 @@ inline std::uint32_t mortonOrder(double u, double v)
 
 // The index std::lower_bound finds in `cumulative` (the faces' cumulative areas) for a pick,
 // searched only between two entries of a guide table: for each of as many evenly spaced
-// values as there are faces, the first face whose cumulative area reaches it. A binary
-// search over every face for every point was a large share of a small model's LOD chain
-// (docs/benchmarks.md).
+// values as there are faces, the first face whose cumulative area reaches it: a binary
+// search over every face for every point would take a large share of a small model's LOD
+// chain.
 class AreaGuide
 {
 public:
@@ -240,7 +241,7 @@ private:
 
 // `picks` (each with a `face` below `faces` and an `order`) face by face, in face order,
 // and along each face by `order`: a counting sort by face, then a short sort per face (a
-// sort of all the points at once was a fifth of a small model's LOD chain).
+// sort of all the points at once would cost far more).
 template <class Sample>
 std::vector<Sample> groupedByFace(const std::vector<Sample>& picks, std::size_t faces)
 {

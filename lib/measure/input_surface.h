@@ -14,8 +14,8 @@
 // standing on a board). Every part of an assembly counts: where two parts fit tightly (a
 // pin in a bore, closer than the tessellation's chord error), a face of the pin carried
 // nearer the bore's wall than its own surface is lit as the bore's inside is, and that is
-// the face the benchmarks compare it with. Counting only the face's own part let such
-// collapses run unpriced (docs/benchmarks.md, issue 14's corpus).
+// the face the benchmarks compare it with. Counting only the face's own part would let such
+// collapses run unpriced.
 #pragma once
 
 #include "measure/triangle_tree.h"

@@ -6,7 +6,7 @@
 //    plane through the edge perpendicular to that face, weighted by boundaryWeight × the
 //    face's weight, so that moving the edge sideways by d costs what moving that face off
 //    its plane by d costs. (A weight of |e|² would make the long thin faces CAD exporters
-//    put along features nearly free to slide: holes closed up at 90 % reduction.)
+//    put along features nearly free to slide, and holes close up at far reductions.)
 //  - planarQuadric adds the same edge planes with a tiny weight on all other edges.
 // The accumulated weight (the face weights, called area below) is kept beside each
 // quadric, so sqrt(cost / area) is an RMS distance in model units: the collapse error
@@ -110,11 +110,10 @@ private:
     // more cap, so nearly every plane weighs the same, as in Garland and Heckbert's paper
     // and CGAL. Area weights let the big faces CAD exporters make of flat regions and long
     // strips outweigh the small ones beside them and hide a deviation concentrated there;
-    // a cap at a quarter of the mean still did (90 % Hausdorff over 7 bench tessellations,
-    // worst 0.0103 % -> 0.0070 %, with the priority on the quadric cost). Without the floor
-    // of one cap, the faces of a small fillet or a rounded corner, a hundredth of the mean
-    // and less, weighed next to nothing, and the simplifier kept the long strips' vertices
-    // beside them and coarsened the corner (docs/benchmarks.md, issue 14's corpus).
+    // a cap at a quarter of the mean still does. Without the floor of one cap, the faces of
+    // a small fillet or a rounded corner, a hundredth of the mean and less, would weigh next
+    // to nothing, and the simplifier would keep the long strips' vertices beside them and
+    // coarsen the corner (docs/benchmarks.md).
     static constexpr double kAreaCapOfMean = 0.01;
 
     template <class MeshType>

@@ -1,4 +1,4 @@
-// A large mesh collapsed on two cores (issue 14, item 4: the simplifier's throughput).
+// A large mesh collapsed on two cores.
 //
 // One collapse session is a sequence: each collapse changes what the collapses beside it
 // cost. Two collapses whose neighbourhoods never meet change nothing for each other,

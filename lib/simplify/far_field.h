@@ -1,4 +1,4 @@
-// The far field (issue 13): below kFacingFarField of its input faces (toward a face target),
+// The far field: below kFacingFarField of its input faces (toward a face target),
 // or in an LOD chain's levels where the model is a few dozen pixels high, a mesh has a few
 // hundred faces left for what had thousands, and what a viewer sees of a collapse there is
 // how far it moves the surface, the Hausdorff distance, which the quadrics' sum of squared
@@ -40,20 +40,20 @@ namespace cadlod {
 // Beside the largest distance a collapse opens, its quadric error (the mean distance of its
 // new vertex to the planes it stands for) counts, squared, at this share: most collapses of
 // a flat region open none, and among those the quadric still tells which moves the surface
-// least. Tried at 0, 0.5, 1, 2, 4 and 16 on the far-field bench (docs/benchmarks.md).
+// least. Chosen on the far-field bench (docs/benchmarks.md).
 inline constexpr double kFarFieldMeanShare = 0.5;
 
 // A distance misses what a viewer of a solid sees at that size: its outline. Flattening a
 // plate's corner opens half the plate's thickness but takes a wedge out of its outline in
 // every side view, while folding a boss into a fin opens its radius and takes less. So the
 // volume a collapse sweeps counts beside, as the edge of a cube of that volume, squared,
-// at this share. Tried at 0.1 to 0.5 on the far-field bench (docs/benchmarks.md).
+// at this share. Chosen on the far-field bench (docs/benchmarks.md).
 inline constexpr double kFarFieldSweptShare = 0.18;
 
 // A fin is seen edge-on from the directions in its plane, where the part's whole width
 // across it vanishes, about twice the distance the fold opens (the fin runs through the
-// middle): so a fold is ranked at this many times that distance. Tried at 1, 1.5, 2 and 3
-// on the far-field bench (docs/benchmarks.md).
+// middle): so a fold is ranked at this many times that distance (chosen on the far-field
+// bench, docs/benchmarks.md).
 inline constexpr double kFoldWidth = 2.0;
 
 // Whether v0 and v1 are an edge of a tetrahedron, a closed component of four faces: its
@@ -61,7 +61,7 @@ inline constexpr double kFoldWidth = 2.0;
 // joined by an edge), yet in the far field it is the cheapest step a small tall part can
 // take. It folds the part into a fin, two faces back to back, which keeps the part's
 // height and outline from the side where removing it opens its whole height (a board's
-// capacitors at 99 %: meshoptimizer keeps them so). A fin's own edges stay refused, and
+// capacitors, seen from far: meshoptimizer keeps them so). A fin's own edges stay refused, and
 // the fin is removed whole like any component.
 template <class VertexType>
 bool foldsTetrahedron(VertexType* v0, VertexType* v1)

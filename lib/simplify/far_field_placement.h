@@ -85,7 +85,7 @@ struct FarFieldPlacement {
     // once it reaches `enough`, the rest is not looked at (`farthest`: collapseError's);
     // below `atLeast` distances are not told apart, and that is the least returned.
     // Toward a face target, measuring the faces' points too ranks a little better but
-    // makes a 99 % run much slower (docs/benchmarks.md).
+    // makes a far reduction much slower (docs/benchmarks.md).
     static double farFieldDistance(const Context& ctx, VertexType* v0, VertexType* v1, const vcg::Point3d& p,
                                    double enough, std::uint32_t& farthest, double atLeast = 0.0)
     {
@@ -101,8 +101,8 @@ struct FarFieldPlacement {
     // far as p, the faces' centroids and the midpoints of their edges from p tell, or `known`
     // where that is larger; from `enough` on, the rest is not looked at. A face that bridges
     // a gap (a socket's mouth, a groove) stands off the input in its middle, though its
-    // corners lie on it: p alone said nothing of that, and a chain level measured twice the
-    // distance its collapses had been held to (docs/benchmarks.md).
+    // corners lie on it: p alone says nothing of that, and a chain level would measure more
+    // than the distance its collapses were held to.
     static double backFromNewFaces(const InputSurface& surface, const std::vector<RingFace>& ring,
                                    const vcg::Point3d& p, double known, double enough)
     {

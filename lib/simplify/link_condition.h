@@ -6,7 +6,7 @@
 // Lk(ab). On closed surfaces the two agree. Beside a boundary they do not: a boundary run
 // of the second endpoint whose ends are also the first's neighbours is missed. Then
 //   - it passes some collapses that give an edge four faces (a vertex where two boundary
-//     runs meet, a pinch: the castle demo's forest at 90 % made 74 new non-manifold edges):
+//     runs meet, a pinch, as in a forest of thin trees simplified far):
 //     makesNonManifoldEdge refuses those besides;
 //   - it refuses some that keep the topology (an interior vertex into a boundary one).
 //

@@ -27,7 +27,7 @@ struct NewFaceChecks {
     // How much of the ring changes shade with the new vertex at p: the sum, over the faces
     // turned more than the shading angle from the face they were in the input, of area ×
     // (1 − cos of the turn). Turns below the angle (a crease sliding along a fillet, a facet
-    // of a fine cylinder) are not counted: pricing those costs Hausdorff and slivers at 50 %
+    // of a fine cylinder) are not counted: pricing those costs distance and slivers
     // for no shading a viewer sees.
     static double shadedArea(const Context& ctx, const vcg::Point3d& p)
     {

@@ -59,15 +59,15 @@ struct SimplifyParams {
     // add to the slivers (compactness < 0.1) around it either, even above the worst of them:
     // near the input a tessellation's strips of slivers are coarsened, not multiplied. Farther
     // down faces must grow long to follow curved strips, and the count would turn faces over
-    // (docs/benchmarks.md, "Counting slivers near the target"). Above 1: never.
+    // (docs/benchmarks.md). Above 1: never.
     double sliverCountShare = 0.25;
     // Quadric weights: every face weighs about the same (its area capped at 1 % of the mean
     // face area, cad_quadrics.h) plus this share of its full area. The capped weights alone
     // make a plate's large top face count as little as a fillet's sliver: moving a plate corner
     // by the plate's thickness then costs as little as a tiny collapse on the fillet, and far
     // reductions tilt plates into wedges a viewer sees over the whole face. A small share keeps
-    // small faces' planes weighing about the same (a face of mean area weighs 1.5 caps) while a
-    // face 100 times the mean weighs 51. Chosen on the corpus for shading (docs/benchmarks.md).
+    // small faces' planes weighing about the same while a face many times the mean weighs many
+    // times more. Chosen on the corpus for shading (docs/benchmarks.md).
     double largeFaceWeight = 0.005;
     // Shading: a face that turns more than shadingAngle degrees from the face it was in the
     // input is lit differently over its whole area, which a viewer sees even where the surface
@@ -92,8 +92,8 @@ struct SimplifyParams {
     // body into several IndexedFaceSets: KiCad writes one per B-rep face, about a hundred
     // for a push button. Those borders are the body's face edges. The ones a viewer sees
     // are creases (featureAngle) or colour changes (keepColorBorders), both still kept; the
-    // rest pinned every corner of the body's faces and cost 1.5-4x the Hausdorff distance
-    // at 50 % on KiCad's exports (docs/benchmarks.md). On: every part border is a feature.
+    // rest would pin every corner of the body's faces and cost distance for nothing a viewer
+    // sees (docs/benchmarks.md). On: every part border is a feature.
     bool keepPartBorders = false;
     bool keepColorBorders = true;    // edges between faces of different colours (materials) are features
     // What a collapse that breaks a feature (crosses a crease, moves a corner or boundary
@@ -119,10 +119,9 @@ struct SimplifyParams {
     int weightTrialsMaxFaces = 200000;
 };
 
-// Below this share of its input faces a mesh is in the far field (issue 13), where the
-// input-surface check gives way and, toward a face target, operations are ranked by the
-// largest distance they open (far_field.h): the paper's levels and issue 14's reductions
-// stop at 95 %.
+// Below this share of its input faces a mesh is in the far field, where the input-surface
+// check gives way and, toward a face target, operations are ranked by the largest distance
+// they open (far_field.h). The paper's levels stop at 95 %, just above it.
 inline constexpr double kFacingFarField = 0.05;
 
 // The face count where the far field starts for a mesh of `faces` (CollapseContext::

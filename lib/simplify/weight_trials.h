@@ -59,12 +59,12 @@ struct TrialWeights {
 // them drawn round and gives up distance elsewhere. One runs the caller's weights with the
 // constraint planes at a quarter, at every target: a crease vertex may then leave its place
 // on a curved crease where that makes fewer slivers, judged like the others by how close the
-// result stays (docs/benchmarks.md, issue 14's "Constraint planes in the trials"). The last
+// result stays. The last
 // runs without the shape guard, at near targets (kUnguardedTrialShare), and with the
 // constraint planes at a tenth: on a fine part's curved creases (a chip lead's bend and the
 // strips of its sides) the planes hold crease vertices whose going costs nothing a viewer
 // sees, and the guard keeps the strips' slivers; without both the result is often closer
-// and has fewer slivers (docs/benchmarks.md, "The unguarded trial's constraint planes").
+// and has fewer slivers.
 inline constexpr TrialWeights kTrials[] = {
     {1.0, true, false},          // the caller's weights
     {10.0, true, false},         // heavier planes
@@ -84,7 +84,7 @@ inline constexpr double kFeaturesAtCostShare = 0.1;
 // bend, a bottle's fillets), which the guard would keep: without it the result is often
 // closer and has fewer slivers. Farther down the guard is what keeps the faces compact, and
 // the trials' pick, judging slivers only beyond a margin, took the unguarded result where it
-// cost slivers (docs/benchmarks.md, "The shape guard in the trials").
+// cost slivers.
 inline constexpr double kUnguardedTrialShare = 0.5;
 // A sliver share more than this above the lowest of the trials counts against a trial, as
 // one more "best distance" per kTrialSliverStep beyond it: a heavier weight may buy its
@@ -94,7 +94,7 @@ inline constexpr double kTrialSliverStep = 0.05;
 // A trial's shading deviation (shading_deviation.h) over the lowest of the trials counts
 // this much against it, beside its distance over the lowest; below kTrialShadingFloor of the
 // surfaces, shading differences count as that floor (too few to tell trials apart). Chosen
-// on the tuning corpus (docs/benchmarks.md, "Shading in the trials").
+// on the tuning corpus (docs/benchmarks.md).
 inline constexpr double kTrialShadingWeight = 0.7;
 inline constexpr double kTrialShadingFloor = 0.005;
 // Each face a trial turns away from the input surface nearest it (lit as the far side)
@@ -103,8 +103,7 @@ inline constexpr double kTrialShadingFloor = 0.005;
 inline constexpr double kTrialTurnedFaceWeight = 1.0;
 // Seeds of the trials' surface samples (the bench and the report use others), and the
 // fewest samples per side: the largest distance of a coarse result is a spot a few
-// thousand samples miss (a 384-face tube at 90 % measured 3.1 % of the diagonal with 384
-// samples and 4.2 % with 50 000, where another weight gave 3.2 % with both).
+// thousand samples miss, and a trial that misses it looks closer than it is.
 inline constexpr unsigned kTrialSeedForward = 101, kTrialSeedBackward = 102;
 inline constexpr std::size_t kTrialMinSamples = 100000;
 // A trial is judged by the largest distance only, so most of those points need not be
