@@ -17,10 +17,12 @@ TEST(ParameterTable, NamesAreUnique)
     std::set<std::string> names, options, keys;
     for (const SimplifyParameter& row : kSimplifyParameters) {
         EXPECT_TRUE(names.insert(row.name).second) << row.name;
-        if (row.cli.form != CliForm::None)
+        if (row.cli.form != CliForm::None) {
             EXPECT_TRUE(options.insert(row.cli.names).second) << row.cli.names;
-        if (row.jsonKey)
+        }
+        if (row.jsonKey) {
             EXPECT_TRUE(keys.insert(row.jsonKey).second) << row.jsonKey;
+        }
     }
 }
 
@@ -54,10 +56,12 @@ TEST(ParameterTable, CommandLineOptionsTakeNumbers)
 {
     // The command stores option values as double; flags are switches.
     for (const SimplifyParameter& row : kSimplifyParameters) {
-        if (row.cli.form == CliForm::Option)
+        if (row.cli.form == CliForm::Option) {
             EXPECT_EQ(row.field.kind, ParameterKind::Float) << row.name;
-        if (row.cli.form == CliForm::FlagOn || row.cli.form == CliForm::FlagOff)
+        }
+        if (row.cli.form == CliForm::FlagOn || row.cli.form == CliForm::FlagOff) {
             EXPECT_EQ(row.field.kind, ParameterKind::Bool) << row.name;
+        }
     }
 }
 
@@ -66,10 +70,11 @@ TEST(ParameterTable, DefaultsLieInTheirRanges)
     for (const SimplifyParameter& row : kSimplifyParameters) {
         const double d = defaultOf(row);
         EXPECT_LE(d, row.range.max) << row.name;
-        if (row.range.minExcluded)
+        if (row.range.minExcluded) {
             EXPECT_GT(d, row.range.min) << row.name;
-        else
+        } else {
             EXPECT_GE(d, row.range.min) << row.name;
+        }
     }
 }
 
@@ -77,10 +82,12 @@ TEST(ParameterTable, FlagsChangeTheDefault)
 {
     // A flag turning on a parameter that is on already would do nothing.
     for (const SimplifyParameter& row : kSimplifyParameters) {
-        if (row.cli.form == CliForm::FlagOn)
+        if (row.cli.form == CliForm::FlagOn) {
             EXPECT_EQ(defaultOf(row), 0.0) << row.name;
-        if (row.cli.form == CliForm::FlagOff)
+        }
+        if (row.cli.form == CliForm::FlagOff) {
             EXPECT_EQ(defaultOf(row), 1.0) << row.name;
+        }
     }
 }
 
@@ -107,12 +114,15 @@ TEST(ParameterTable, MembersAreTheirNamesakes)
     p.keepColorBorders = false;
     for (const SimplifyParameter& row : kSimplifyParameters) {
         const std::string name = row.name;
-        if (name == "featureAngle")
+        if (name == "featureAngle") {
             EXPECT_EQ(row.field.get(p), 12.5);
-        if (name == "candidatesPerEdge")
+        }
+        if (name == "candidatesPerEdge") {
             EXPECT_EQ(row.field.get(p), 7.0);
-        if (name == "keepColorBorders")
+        }
+        if (name == "keepColorBorders") {
             EXPECT_EQ(row.field.get(p), 0.0);
+        }
     }
 }
 
