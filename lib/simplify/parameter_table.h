@@ -133,23 +133,12 @@ inline constexpr SimplifyParameter kSimplifyParameters[] = {
      "top) keep their place. 0: all faces weigh the same.",
      kNonNegative, false, {}, nullptr},
     {"weightTrials", weightTrialsSwitch(), "Try plane weights",
-     "A mesh of fewer than 200 000 faces with a face target is first simplified on copies with the large-face "
-     "weight times 1, 10 and 40, and once with the boundary/crease weight at a quarter (and, where at most a tenth "
-     "of the faces is left, times 200 with features at their plain quadric cost, with and without their constraint "
-     "planes, and times 10 with no new fold past 30° between faces that met smoothly; where at least half of the "
-     "faces stay, once without the shape guard and with the boundary/crease weight at a tenth), two at a time on "
-     "two cores, and the weights whose result is nearest the input (Hausdorff distance, the share of the surface "
-     "lit differently, slivers, faces turned over) are used (logged), or, where it has at least a point fewer "
-     "slivers within 1.1 times the distance and 1.15 times the shading, their run with slivers removed first. Off: "
-     "the large-face weight as given.",
+     "A mesh of fewer than 200 000 faces with a face target is first simplified with a few plane weights, two at "
+     "a time on two cores, and the result nearest the input is used (logged). Off: the large-face weight as given.",
      kSwitch, false,
      {CliForm::FlagOff, "--no-weight-trials",
-      "Simplify with the default plane weight only; by default a mesh under 200 000 faces is first simplified with "
-      "three plane weights and once with the crease and boundary constraint planes at a quarter (seven runs at 90 % "
-      "and beyond: the heaviest weight with features at their plain cost, with and without their constraint "
-      "planes, and one keeping smooth joins; where at least half of the faces stay, one more without the shape "
-      "guard), two at a time on two cores, and the one nearest the input (distance, shading, slivers, faces turned "
-      "over) is used, or its run with slivers removed first where that costs no distance or shading a viewer sees",
+      "Simplify with the default plane weight only; by default a mesh under 200 000 faces is first simplified with a "
+      "few plane weights, two at a time on two cores, and the result nearest the input is used",
       8},
      "weightTrials"},
     {"shadingWeight", memberField<&SimplifyParams::shadingWeight>(), "Shading weight",
