@@ -2,8 +2,11 @@
 
 #include "cli_errors.h"
 
+#include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <map>
+#include <vector>
 
 namespace cadlod::cli {
 
@@ -21,36 +24,47 @@ void addImportOptions(CLI::App& app, ImportArgs& a)
         ->capture_default_str();
 }
 
+namespace {
+
+// The simplifier's rows `cadlod` offers, in the order `--help` lists them.
+std::vector<std::size_t> cliRows()
+{
+    std::vector<std::size_t> rows;
+    for (std::size_t i = 0; i < kSimplifyParameterCount; ++i)
+        if (kSimplifyParameters[i].cli.form != CliForm::None)
+            rows.push_back(i);
+    std::sort(rows.begin(), rows.end(), [](std::size_t a, std::size_t b) {
+        return kSimplifyParameters[a].cli.position < kSimplifyParameters[b].cli.position;
+    });
+    return rows;
+}
+
+CLI::Validator validatorOf(const ParameterRange& r)
+{
+    if (r.min == 0 && !r.minExcluded && r.max == std::numeric_limits<double>::infinity())
+        return CLI::NonNegativeNumber;
+    return CLI::Range(r.min, r.max);
+}
+
+}  // namespace
+
+ProtectionArgs::ProtectionArgs()
+{
+    for (std::size_t i = 0; i < kSimplifyParameterCount; ++i)
+        values[i] = defaultOf(kSimplifyParameters[i]);
+}
+
 void addProtectionOptions(CLI::App& app, ProtectionArgs& a)
 {
-    app.add_option("--feature-angle", a.featureAngle, "Creases sharper than this (degrees) are features")
-        ->check(CLI::Range(0.0, 180.0))
-        ->capture_default_str();
-    app.add_option("--feature-penalty", a.featurePenalty,
-                   "A collapse that breaks a feature costs this many times its quadric cost (0: hard lock)")
-        ->check(CLI::NonNegativeNumber)
-        ->capture_default_str();
-    app.add_option("--shading-weight", a.shadingWeight,
-                   "Price of the faces a collapse turns further than the shading angle from their input faces, per squared "
-                   "bbox diagonal of turned area (0: geometry alone)")
-        ->check(CLI::NonNegativeNumber)
-        ->capture_default_str();
-    app.add_flag("--part-borders", a.partBorders,
-                 "Edges between parts are features, also where the parts meet flat and in one colour");
-    app.add_flag("--no-colour-borders,--no-color-borders", a.noColorBorders,
-                 "Edges between colours (materials) are not features");
-    app.add_flag("--no-boundary", a.noBoundary, "Open boundaries get no constraint quadrics");
-    app.add_flag("--no-relax", a.noRelax, "Stop early rather than cut non-manifold edges apart, relax the shape guards or remove components");
-    app.add_flag("--keep-tunnels", a.keepTunnels,
-                 "Never cut and cap a tunnel (a through-hole) whose rim has shrunk to three edges");
-    app.add_flag("--no-weight-trials", a.noWeightTrials,
-                 "Simplify with the default plane weight only; by default a mesh under 200 000 faces is first "
-                 "simplified with three plane weights and once with the crease and boundary constraint planes at a "
-                 "quarter (seven runs at 90 % and beyond: the heaviest weight with features at their plain cost, with "
-                 "and without their constraint planes, and one keeping smooth joins; where at least half of the faces "
-                 "stay, one more without the shape guard), two at a time on two cores, and the one nearest the input "
-                 "(distance, shading, slivers, faces turned over) is used, or its run with slivers removed first where "
-                 "that costs no distance or shading a viewer sees");
+    for (const std::size_t i : cliRows()) {
+        const CliSpec& cli = kSimplifyParameters[i].cli;
+        if (cli.form == CliForm::Option)
+            app.add_option(cli.names, a.values[i], cli.help)
+                ->check(validatorOf(kSimplifyParameters[i].range))
+                ->capture_default_str();
+        else
+            app.add_flag(cli.names, a.flags[i], cli.help);
+    }
 }
 
 void addExportOptions(CLI::App& app, ExportArgs& a)
@@ -101,16 +115,15 @@ ImportSettings importSettings(const ImportArgs& a)
 
 void applyProtection(const ProtectionArgs& a, SimplifyParams& p)
 {
-    p.featureAngle = a.featureAngle;
-    p.featurePenalty = a.featurePenalty;
-    p.shadingWeight = a.shadingWeight;
-    p.keepPartBorders = a.partBorders;
-    p.keepColorBorders = !a.noColorBorders;
-    p.preserveBoundary = !a.noBoundary;
-    p.relaxToReachTarget = !a.noRelax;
-    p.closeTunnels = !a.keepTunnels;
-    if (a.noWeightTrials)
-        p.weightTrialsMaxFaces = 0;
+    for (const std::size_t i : cliRows()) {
+        const SimplifyParameter& row = kSimplifyParameters[i];
+        if (row.cli.form == CliForm::Option)
+            row.field.set(p, a.values[i]);
+        else if (a.flags[i])
+            row.field.set(p, row.cli.form == CliForm::FlagOn ? 1.0 : 0.0);
+        else
+            row.field.set(p, defaultOf(row));
+    }
 }
 
 SaveSettings saveSettings(const ExportArgs& a)
@@ -139,11 +152,26 @@ nlohmann::json toJson(const ImportArgs& a)
 
 nlohmann::json toJson(const ProtectionArgs& a)
 {
-    return {{"featureAngle", a.featureAngle},   {"featurePenalty", a.featurePenalty},
-            {"shadingWeight", a.shadingWeight},
-            {"keepPartBorders", a.partBorders}, {"keepColourBorders", !a.noColorBorders},
-            {"preserveBoundary", !a.noBoundary}, {"relaxToReachTarget", !a.noRelax},
-            {"closeTunnels", !a.keepTunnels}, {"weightTrials", !a.noWeightTrials}};
+    SimplifyParams p;
+    applyProtection(a, p);
+    nlohmann::json j = nlohmann::json::object();
+    for (const SimplifyParameter& row : kSimplifyParameters) {
+        if (!row.jsonKey)
+            continue;
+        const double value = row.field.get(p);
+        switch (row.field.kind) {
+        case ParameterKind::Bool:
+            j[row.jsonKey] = value != 0;
+            break;
+        case ParameterKind::Int:
+            j[row.jsonKey] = int(value);
+            break;
+        case ParameterKind::Float:
+            j[row.jsonKey] = value;
+            break;
+        }
+    }
+    return j;
 }
 
 nlohmann::json toJson(const ExportArgs& a)

@@ -3,9 +3,10 @@
 // export (units, draw type, objects, records).
 #pragma once
 #include "mesh_files.h"
-#include "simplify/simplify_params.h"
+#include "simplify/parameter_table.h"
 
 #include <CLI/CLI.hpp>
+#include <array>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -18,16 +19,12 @@ struct ImportArgs {
     std::string normals = "keep";  // keep|recompute
 };
 
-struct ProtectionArgs {  // defaults: the simplifier's own
-    double featureAngle = SimplifyParams{}.featureAngle;
-    double featurePenalty = SimplifyParams{}.featurePenalty;
-    double shadingWeight = SimplifyParams{}.shadingWeight;
-    bool partBorders = SimplifyParams{}.keepPartBorders;
-    bool noColorBorders = false;
-    bool noBoundary = false;
-    bool noRelax = false;
-    bool keepTunnels = false;
-    bool noWeightTrials = false;
+// The simplifier's parameters offered as options and flags (simplify/parameter_table.h's
+// CLI column), by table row.
+struct ProtectionArgs {
+    ProtectionArgs();
+    std::array<double, kSimplifyParameterCount> values{};  // the options' values: the simplifier's defaults unless given
+    std::array<bool, kSimplifyParameterCount> flags{};     // the flags given
 };
 
 struct ExportArgs {

@@ -1,5 +1,5 @@
-// The CAD Quadric Edge Collapse's placement and protection parameters, shared by the
-// simplification filter and the LOD-set filter (same names in both, for .mlx scripts).
+// The CAD Quadric Edge Collapse's placement and protection parameters (simplify/parameter_table.h),
+// shared by the simplification filter and the LOD-set filter (same names in both, for .mlx scripts).
 #pragma once
 
 #include "simplify/simplify_params.h"

@@ -1,6 +1,7 @@
 // Parameters and results of the CAD Quadric Edge Collapse (cadlod::simplify).
 // Plain data, no vcglib or MeshLab types: the MeshLab filter, the LOD-set filter, the
-// tests and the benchmarks all fill a SimplifyParams and read a SimplifyStats.
+// tests and the benchmarks all fill a SimplifyParams and read a SimplifyStats. How the
+// front ends name, explain and offer the parameters: parameter_table.h.
 #pragma once
 
 #include <algorithm>
