@@ -6,7 +6,7 @@
 // level).
 #pragma once
 
-#include "simplify_params.h"
+#include "simplify/simplify_params.h"
 
 #include <cstddef>
 #include <iterator>
