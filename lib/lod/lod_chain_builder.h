@@ -5,6 +5,7 @@
 // proxies and the levels' switch distances.
 #pragma once
 
+#include "lod/chain_level_measure.h"
 #include "lod/collapse_buckets.h"
 #include "lod/lod_builder.h"
 #include "lod/lod_chain.h"
@@ -36,20 +37,6 @@ inline constexpr double kChainMinCompactness = 0.05;
 // The share of the simplifier's feature penalty that chain levels use (see
 // LodChainBuilder::chainParams).
 inline constexpr double kChainFeaturePenaltyShare = 0.5;
-// A coarse level is sampled with at most this many points per face (besides its vertices)
-// when measured against level 0: its points stand far from level 0, where each lookup is
-// slow, and a few dozen per face find the largest distance of a flat triangle to the
-// surface it replaces (MeshLab's Hausdorff filter samples one point per vertex).
-inline constexpr std::size_t kBackwardSamplesPerFace = 256;
-// ...but never fewer than this many in all: a level of a few dozen faces, each large, would
-// otherwise be sampled too sparsely to find its largest distance within the 5 % that an
-// independent re-measurement may find beyond it.
-inline constexpr std::size_t kMinBackwardSamples = 32768;
-// ...and at most this many (or as many as level 0 has, where that is more, or what the
-// caller asked for). A coarse level's largest distance may stand over a narrow strip of one
-// large face, which random points find only by luck: 100 000 points missed one of a robot's
-// levels by 22 % where a million found it (chain_bench --verify).
-inline constexpr std::size_t kBackwardSamplesCap = 400000;
 
 // One chain in the making (buildLodChain's arguments, see there). build() runs the steps
 // once; the builder lives for that call.
@@ -83,10 +70,7 @@ public:
     }
 
 private:
-    struct Measures {
-        SymmetricHausdorff distance;
-        CompactnessStats compactness;
-    };
+    using Measures = ChainLevelMeasures;
     // A level copied out of the pieces into a snapshot, measured while their sessions go on
     // to the next one. So the next budget uses the ratio learnt up to the level before it,
     // one level late; that rule does not depend on how the two run, so neither does the
@@ -145,13 +129,9 @@ private:
         result_.compactness.push_back(meshCompactness(original_));
         meshes_.push_back(&original_);
 
-        const std::size_t samples = options_.hausdorffSamples
-                                        ? options_.hausdorffSamples
-                                        : std::clamp<std::size_t>(std::size_t(original_.fn), 100000, 500000);
         // Level 0's points and index are made beside the first collapses, before anything is
         // measured.
-        distanceToOriginal_.emplace(original_, samples, result_.modelSize, together_);
-        backwardCap_ = options_.hausdorffSamples ? samples : std::max(samples, kBackwardSamplesCap);
+        measure_.emplace(original_, options_.hausdorffSamples, result_.modelSize, together_);
         return true;
     }
 
@@ -311,7 +291,7 @@ private:
     // Run beside the collapses: level 0's index (the first time), and the pending level.
     void measurePending()
     {
-        distanceToOriginal_->prepare();
+        measure_->prepare();
         if (pending_.taken)
             pending_.measured = measure(*pending_.mesh);
     }
@@ -379,15 +359,7 @@ private:
         addLevel(mesh, s.stats, s.measured);
     }
 
-    Measures measure(MeshType& mesh)
-    {
-        Measures m;
-        const std::size_t backwardSamples =
-            std::min(backwardCap_, std::max(kMinBackwardSamples, kBackwardSamplesPerFace * std::size_t(mesh.fn)));
-        together_([&] { m.distance = (*distanceToOriginal_)(mesh, backwardSamples); },
-                  [&] { m.compactness = meshCompactness(mesh); });
-        return m;
-    }
+    Measures measure(MeshType& mesh) { return (*measure_)(mesh); }
 
     void addLevel(MeshType& mesh, const SimplifyStats& stats, const Measures& measured)
     {
@@ -538,7 +510,7 @@ private:
     // The levels that serve, their switch distances, and each level mesh's LodLevel.
     void finish()
     {
-        result_.measureSeconds = distanceToOriginal_->seconds();
+        result_.measureSeconds = measure_->seconds();
         detail::keepUsefulLevels(result_, meshes_);
         const double errorFloor = std::max(kRelativeErrorFloor * result_.modelSize, 1e-12);
         assignSwitchDistances(result_.levels, result_.modelSize, view_, errorFloor);
@@ -568,8 +540,7 @@ private:
     LodSetResult result_;
     LodLevel level0_;
     std::vector<MeshType*> meshes_;  // parallel to result_.levels
-    std::optional<DistanceToLevelZero<MeshType>> distanceToOriginal_;
-    std::size_t backwardCap_ = 0;  // the most points a level is sampled with (measure)
+    std::optional<ChainLevelMeasure<MeshType>> measure_;  // against level 0
     SimplifyParams params_;
     SimplifyStats stats_;  // the collapses' statistics since the last level taken
     CollapseBuckets<MeshType> pieces_;
