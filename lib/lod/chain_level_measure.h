@@ -3,7 +3,7 @@
 // on the level's side as its faces call for.
 #pragma once
 
-#include "lod/lod_builder.h"  // DistanceToLevelZero
+#include "lod/distance_to_level_zero.h"
 #include "measure/compactness.h"
 #include "measure/hausdorff.h"
 #include "support/run_together.h"

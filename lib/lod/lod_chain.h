@@ -36,6 +36,10 @@
 // Every level's range comes from its measured error (lod_plan.h): it is drawn from where
 // that error projects to the pixel error, until the next level's does. The last level is
 // drawn for ever unless `cullPixels` is set.
+//
+// This header declares buildLodChain; lod_chain_builder.h defines it, step by step. It is
+// compiled once for CoreMesh (lod_chain.cpp) and, in the MeshLab plugin, for CMeshO
+// (cores_for_cmesho.cpp).
 #pragma once
 
 #include "lod/lod_builder.h"  // LodSetResult
@@ -66,6 +70,10 @@ struct LodChainOptions {
 // (far_field.h): from there on they rank operations by the distance they open and are held
 // to the budget by it. Tried at 16 to 256 on the chain bench (docs/benchmarks.md).
 inline constexpr double kFarFieldPixels = 64.0;
+// The least compactness a collapse of a chain level may leave a face with (the simplifier's
+// shape guard, simplify_params.h), before the far field, where a session held to its
+// distance is judged by the distance alone (cad_edge_collapse.h).
+inline constexpr double kChainMinCompactness = 0.05;
 // Where the model is this many pixels high, a tetrahedron per component replaces its box.
 inline constexpr double kTetrahedronPixels = 2.0;
 // Switch-in distance of the last level when the model is never culled.
@@ -104,6 +112,10 @@ LodSetResult buildLodChain(MeshType& original, MeshType& working, const LodChain
                            const std::function<MeshType&(int)>& newLevel, vcg::CallBackPos* progress = nullptr,
                            std::function<MeshType&()> newScratch = {});
 
-}  // namespace cadlod
+// Compiled once (lod_chain.cpp).
+struct CoreMesh;
+extern template LodSetResult buildLodChain<CoreMesh>(CoreMesh&, CoreMesh&, const LodChainOptions&,
+                                                     const std::function<CoreMesh&(int)>&, vcg::CallBackPos*,
+                                                     std::function<CoreMesh&()>);
 
-#include "lod/lod_chain_builder.h"
+}  // namespace cadlod

@@ -7,9 +7,12 @@
 
 #include "lod/chain_level_measure.h"
 #include "lod/collapse_buckets.h"
+#include "lod/copy_with_parts.h"
 #include "lod/lod_builder.h"
 #include "lod/lod_chain.h"
+#include "lod/lod_plan.h"
 #include "lod/lod_proxies.h"
+#include "lod/useful_levels.h"
 #include "measure/compactness.h"
 #include "measure/hausdorff.h"
 #include "mesh/layer_metadata.h"
@@ -30,10 +33,6 @@
 
 namespace cadlod {
 
-// The least compactness a collapse of a chain level may leave a face with (the simplifier's
-// shape guard, simplify_params.h), before the far field, where a session held to its
-// distance is judged by the distance alone (cad_edge_collapse.h).
-inline constexpr double kChainMinCompactness = 0.05;
 // The share of the simplifier's feature penalty that chain levels use (see
 // LodChainBuilder::chainParams).
 inline constexpr double kChainFeaturePenaltyShare = 0.5;
