@@ -1,8 +1,13 @@
 #include "lod_set_filter.h"
 
-#include "lod/lod_builder.h"
-#include "lod/lod_chain.h"
+#include "lod/copy_with_parts.h"
+#include "lod/lod_builder.h"  // buildLodSet<CMeshO>: compiled in cores_for_cmesho.cpp
+#include "lod/lod_chain.h"    // buildLodChain<CMeshO>: likewise
+#include "mesh/layer_metadata.h"
 #include "simplify_parameters.h"
+
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/topology.h>
 
 #include <QElapsedTimer>
 

@@ -14,7 +14,7 @@
 #pragma once
 
 #include "simplify/component_removal.h"
-#include "lod/lod_builder.h"  // detail::copyWithParts
+#include "lod/copy_with_parts.h"
 #include "simplify/rest_of_model.h"
 #include "support/run_together.h"
 #include "simplify/simplify_impl.h"

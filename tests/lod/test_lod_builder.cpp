@@ -1,6 +1,8 @@
 // buildLodSet on a plain vcglib mesh: level counts, error and switch-distance monotony,
 // the per-mesh LodLevel attribute, part attributes carried into every level.
+#include "lod/distance_to_level_zero.h"
 #include "lod/lod_builder.h"
+#include "lod/useful_levels.h"
 #include "test_mesh.h"
 
 #include <gtest/gtest.h>

@@ -4,6 +4,7 @@
 #include "test_mesh.h"
 
 #include "lod/lod_chain.h"
+#include "lod/lod_proxies.h"  // detail::trimmedBox
 
 #include <gtest/gtest.h>
 
