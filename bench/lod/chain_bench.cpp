@@ -15,7 +15,7 @@
 #include "mesh_loading.h"
 
 #include "lod/lod_chain.h"
-#include "simplify/simplify.h"  // simplify(), timed beside the chain
+#include "simplify/best_of_trials.h"  // bestOfTrials(), timed beside the chain
 
 #include <chrono>
 #include <cstdio>
