@@ -143,22 +143,10 @@ private:
             error = "misplaced Continuation record at offset " + std::to_string(pos);
             return false;
         default:
-            if (isPrimary(op))
+            if (isPrimaryRecord(op))
                 last_ = LastPrimary{Node::Other, stack_.back().level, stack_.back().part};
             ++stats_.unknownRecords;
             return true;
-        }
-    }
-
-    // Primary records we do not interpret still open a Push level of their own.
-    static bool isPrimary(std::uint16_t op)
-    {
-        switch (op) {
-        case 14: case 60: case 61: case 62: case 63: case 64: case 90: case 91: case 92:
-        case 94: case 95: case 96: case 98: case 101: case 111: case 130:
-            return true;
-        default:
-            return false;
         }
     }
 

@@ -19,6 +19,19 @@ constexpr std::uint16_t Header = 1, Group = 2, Object = 4, Face = 5, Push = 10, 
                         LocalVertexPool = 85, MeshPrimitive = 86, Material = 113;
 }
 
+// Whether `op` is a primary record the reader does not interpret (a degree-of-freedom, a
+// light, an instance, a switch...): it still opens a Push level of its own.
+inline bool isPrimaryRecord(std::uint16_t op)
+{
+    switch (op) {
+    case 14: case 60: case 61: case 62: case 63: case 64: case 90: case 91: case 92:
+    case 94: case 95: case 96: case 98: case 101: case 111: case 130:
+        return true;
+    default:
+        return false;
+    }
+}
+
 namespace size {
 constexpr std::size_t Header = 324, ColorPalette = 4228, Material = 84, Group = 44, Object = 28,
                       Lod = 80, Face = 80, Mesh = 84, VertexPalette = 8, VertexColor = 40,
