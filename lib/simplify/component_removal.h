@@ -37,8 +37,8 @@ class ComponentRemoval : public PricedOperation<MeshType>
 {
 public:
     using Base = PricedOperation<MeshType>;
-    using typename Base::VertexType, typename Base::FaceType, typename Base::ScalarType, typename Base::HeapType,
-        typename Base::HeapElem, typename Base::Context;
+    using typename Base::Context, typename Base::HeapType, typename Base::HeapElem;
+    using typename Base::VertexType, typename Base::FaceType, typename Base::ScalarType;
 
     // Adds one removal per component but the largest (unless the context says the model's
     // largest is in another mesh) to `heap` (not re-heapified). Components that touch (a

@@ -108,10 +108,11 @@ void reserveTunnelCuts(MeshType& m, CollapseContext<MeshType>& ctx)
 template <class MeshType>
 class TunnelCut : public PricedOperation<MeshType>
 {
-public:
     using Base = PricedOperation<MeshType>;
-    using typename Base::VertexType, typename Base::FaceType, typename Base::ScalarType, typename Base::HeapType,
-        typename Base::HeapElem, typename Base::Context;
+
+public:
+    using typename Base::VertexType, typename Base::FaceType, typename Base::ScalarType;
+    using typename Base::Context, typename Base::HeapType, typename Base::HeapElem;
     using VFIterator = vcg::face::VFIterator<FaceType>;
     using Corner = std::pair<FaceType*, int>;  // a face and the index of the loop vertex in it
 
