@@ -25,8 +25,8 @@ inline constexpr std::size_t kBackwardSamplesPerFace = 256;
 inline constexpr std::size_t kMinBackwardSamples = 32768;
 // ...and at most this many (or as many as level 0 has, where that is more, or what the
 // caller asked for). A coarse level's largest distance may stand over a narrow strip of one
-// large face, which random points find only by luck: 100 000 points missed one of a robot's
-// levels by 22 % where a million found it (chain_bench --verify).
+// large face, which random points find only by luck; `chain_bench --verify` measures the
+// levels again with many more points to check the cap finds it.
 inline constexpr std::size_t kBackwardSamplesCap = 400000;
 
 struct ChainLevelMeasures {

@@ -1,5 +1,5 @@
-// Independent pieces of a model, simplified side by side (issue 15: the parts of an
-// assembly simplify in parallel). A collapse never crosses from one connected component
+// Independent pieces of a model, simplified side by side (the parts of an assembly
+// simplify in parallel). A collapse never crosses from one connected component
 // to another, and under an error bound a component's collapses depend on that component
 // alone, so the model is dealt into a few buckets of whole components, each simplified by
 // a collapse session of its own; with a RunTogether that runs tasks at once, the buckets

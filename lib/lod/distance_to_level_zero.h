@@ -107,7 +107,7 @@ public:
     // split its edges into kLevelEdgePieces. A level held to its budget by the distance each
     // collapse opens from level 0's points (collapse_buckets.h) has its largest distance
     // between those points as often as not: the edge midpoints find it where random points
-    // missed it by 7 % (the demo's level 3), the edge pieces next to a long face's corner.
+    // miss it, the edge pieces next to a long face's corner.
     SymmetricHausdorff operator()(MeshType& level, std::size_t backwardSamples)
     {
         const auto start = std::chrono::steady_clock::now();
@@ -133,7 +133,7 @@ private:
     // The distances from level 0's points on the faces `level` no longer has. A level that
     // kept none of them (every coarse one) is measured from the points drawn on all of level
     // 0, the same random points each time: they are drawn once (on a million faces, drawing
-    // them again for every level was a large share of a chain's time: docs/benchmarks.md).
+    // them again for every level would take a large share of a chain's time).
     HausdorffStats fromLevelZero(MeshType& level)
     {
         const detail::ClosestFace<MeshType> closest(level);

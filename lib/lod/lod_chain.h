@@ -68,7 +68,7 @@ struct LodChainOptions {
 
 // Where the model is this many pixels high (its diagonal), the pieces go into the far field
 // (far_field.h): from there on they rank operations by the distance they open and are held
-// to the budget by it. Tried at 16 to 256 on the chain bench (docs/benchmarks.md).
+// to the budget by it. Chosen on the chain bench (docs/benchmarks.md).
 inline constexpr double kFarFieldPixels = 64.0;
 // The least compactness a collapse of a chain level may leave a face with (the simplifier's
 // shape guard, simplify_params.h), before the far field, where a session held to its
