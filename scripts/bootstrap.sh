@@ -19,6 +19,7 @@ PACKAGES=(
   openscenegraph libopenscenegraph-dev
   libcoin-dev
   libcli11-dev nlohmann-json3-dev libtbb-dev parallel
+  python3  # scripts/paper: the paper reproduction
 )
 # Fuzzing (tests/fuzz, CADLOD_BUILD_FUZZERS=ON): clang with libFuzzer.
 if [ "${CADLOD_FUZZ_DEPS:-0}" = 1 ]; then
