@@ -5,12 +5,14 @@
 #include "progress_bar.h"
 
 #include <cstdio>
+#include <string>
 
 int main(int argc, char** argv)
 {
     using namespace cadlod::cli;
     CLI::App app{"cadlod: CAD VRML to OpenFlight LOD models"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("cadlod ") + CADLOD_VERSION);
     addConvertCommand(app);
     addSimplifyCommand(app);
     addReportCommand(app);
@@ -20,6 +22,8 @@ int main(int argc, char** argv)
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "cadlod: %s\nRun 'cadlod --help' for the commands and options.\n", e.what());

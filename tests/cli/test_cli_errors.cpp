@@ -57,5 +57,13 @@ TEST(CliErrors, UsageErrorsExitWithTwo)
     EXPECT_EQ(runCadlod({"--help"}).exitCode, 0);
 }
 
+// --version needs no subcommand: it prints the project's version and exits 0.
+TEST(CliErrors, VersionPrintsTheVersion)
+{
+    const CliRun v = runCadlod({"--version"});
+    EXPECT_EQ(v.exitCode, 0) << v.stderrText;
+    EXPECT_EQ(v.stdoutText, "cadlod " CADLOD_TEST_VERSION "\n");
+}
+
 }  // namespace
 }  // namespace cadlod::test
