@@ -3,6 +3,7 @@
 #include "cli_errors.h"
 #include "cli_options.h"
 #include "commands.h"
+#include "assembly_convert.h"
 #include "lod_output.h"
 #include "mesh_files.h"
 #include "output_file.h"
@@ -23,6 +24,7 @@ namespace {
 struct ConvertArgs {
     std::string input, output, report;
     std::string lod = "auto";
+    std::string instances = "keep";
     double pixelError = 1.0, fov = 45.0, viewport = 1080.0, distanceRatio = 2.0, cullPixels = 0.0,
            proxyPixels = 8.0;
     bool fromOriginal = false;
@@ -50,16 +52,6 @@ ViewParams viewOf(const ConvertArgs& a)
     v.pixelThreshold = a.pixelError;
     return v;
 }
-
-// The level meshes live here until the model is written.
-struct LevelStore {
-    std::deque<std::unique_ptr<CoreMesh>> meshes;
-    CoreMesh& add()
-    {
-        meshes.push_back(std::make_unique<CoreMesh>());
-        return *meshes.back();
-    }
-};
 
 LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& store)
 {
@@ -89,6 +81,7 @@ LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& s
 nlohmann::json optionsJson(const ConvertArgs& a)
 {
     return {{"lod", a.lod},
+            {"instances", a.instances},
             {"pixelError", a.pixelError},
             {"fovY", a.fov},
             {"viewport", a.viewport},
@@ -115,6 +108,73 @@ void printSummary(const LodSetResult& r, const flt::WriteStats& written, const s
         std::fprintf(stderr, "cadlod: note: %s\n", w.c_str());
 }
 
+void printAssemblySummary(const AssemblyConversion& c, const flt::InstancedWriteStats& written,
+                          const std::string& output)
+{
+    std::fprintf(stderr, "cadlod: %s: %zu placements of %zu distinct parts (%zu shared), %zu bytes\n", output.c_str(),
+                 written.placements, c.parts.size(), written.instanceDefinitions, written.bytes);
+    std::fprintf(stderr, "cadlod: level 0 draws %zu triangles; %zu distinct triangles written in all levels\n",
+                 c.model.placedTriangles(), written.triangles);
+    std::fprintf(stderr, "part                              placements  triangles  levels\n");
+    for (const PartChain& p : c.parts)
+        std::fprintf(stderr, "%-32.32s  %10zu  %9d  %6zu\n", p.name.c_str(), p.placements, p.triangles,
+                     p.result.levels.size());
+}
+
+nlohmann::json partsJson(const AssemblyConversion& c, const ViewParams& view)
+{
+    nlohmann::json parts = nlohmann::json::array();
+    for (const PartChain& p : c.parts)
+        parts.push_back({{"name", p.name}, {"placements", p.placements}, {"faces", p.triangles},
+                         {"modelSize", p.result.modelSize}, {"levels", levelsJson(p.result, view)},
+                         {"warnings", p.result.warnings}});
+    return parts;
+}
+
+// An assembly that shares geometry: each distinct part simplified once, placed by instances.
+void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSettings& importing,
+                      const SaveSettings& saving, Clock::time_point t0)
+{
+    if (saving.flt.geometry != flt::GeometryRecords::Meshes)
+        throw UsageError(a.input + ": shared parts are written with Mesh records; use --records mesh, or "
+                                   "--instances expand for Face records");
+    const double importSeconds = secondsSince(t0);
+    const auto t1 = Clock::now();
+    AssemblyConversion c = convertAssembly(scene, baseName(a.output), importing,
+                                           [&](CoreMesh& original, LevelStore& store) {
+                                               return buildLevels(a, original, store);
+                                           });
+    c.model.units = saving.units;
+    const double lodSeconds = secondsSince(t1);
+    const auto t2 = Clock::now();
+    flt::WriteOptions writeOptions = saving.flt;
+    writeOptions.progress = [](int p) { progress::report(p, "Writing OpenFlight"); };
+    flt::InstancedWriteStats written;
+    std::string error;
+    if (!flt::writeInstancedOpenFlightFile(a.output, c.model, writeOptions, error, &written))
+        throw InputError(error);
+    const double writeSeconds = secondsSince(t2);
+    progress::finish();
+    if (!a.common.quiet)
+        printAssemblySummary(c, written, a.output);
+    if (a.report.empty())
+        return;
+    nlohmann::json report{
+        {"command", "convert"},
+        {"input", {{"path", a.input}, {"format", "VRML"}, {"parts", c.parts.size()},
+                   {"placements", written.placements}, {"faces", c.model.placedTriangles()}}},
+        {"output", {{"path", a.output}, {"bytes", written.bytes}, {"triangles", written.triangles},
+                    {"objects", written.objects}, {"lodNodes", written.lodNodes}, {"placements", written.placements},
+                    {"instanceDefinitions", written.instanceDefinitions},
+                    {"instanceReferences", written.instanceReferences},
+                    {"skippedDegenerateFaces", c.skippedFaces}}},
+        {"options", optionsJson(a)},
+        {"parts", partsJson(c, viewOf(a))},
+        {"timings", {{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds}, {"writeSeconds", writeSeconds},
+                     {"totalSeconds", secondsSince(t0)}}}};
+    writeJsonFile(a.report, report);
+}
+
 void runConvert(const ConvertArgs& a)
 {
     if (extensionOf(a.output) != "flt")
@@ -122,14 +182,20 @@ void runConvert(const ConvertArgs& a)
     checkWritable(a.output, a.common.force);
     if (!a.report.empty())
         checkWritable(a.report, a.common.force);
-    const ImportSettings importing = importSettings(a.import);
+    ImportSettings importing = importSettings(a.import);
+    importing.keepInstances = a.instances == "keep";
     const SaveSettings saving = saveSettings(a.exporting);
     progress::enable(!a.common.quiet);
     limitThreads(a.common.threads);
 
     const auto t0 = Clock::now();
     CoreMesh original;
-    const LoadedMesh loaded = loadMesh(a.input, original, importing);
+    vrml::Scene assembly;
+    const LoadedMesh loaded = loadMesh(a.input, original, importing, &assembly);
+    if (loaded.placements > 0) {
+        convertInstanced(a, assembly, importing, saving, t0);
+        return;
+    }
     const double importSeconds = secondsSince(t0);
 
     const auto t1 = Clock::now();
@@ -196,6 +262,11 @@ void addConvertCommand(CLI::App& app)
     cmd->add_option("--proxy-pixels", args->proxyPixels, "auto: the box proxy serves below this height (px)")
         ->capture_default_str();
     cmd->add_option("--cull-pixels", args->cullPixels, "auto: not drawn below this height (px); 0: never culled")
+        ->capture_default_str();
+    cmd->add_option("--instances", args->instances,
+                    "keep: a part the file places many times (USE, Inline) is simplified once and written as an "
+                    "OpenFlight instance; expand: a copy per placement")
+        ->check(CLI::IsMember({"keep", "expand"}))
         ->capture_default_str();
     cmd->add_flag("--from-original", args->fromOriginal, "List: simplify every level from the original");
     cmd->add_option("--samples", args->samples, "Hausdorff samples per side (0: automatic)");

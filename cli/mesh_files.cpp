@@ -67,26 +67,44 @@ void prepareForSimplifier(CoreMesh& m)
     vcg::tri::UpdateTopology<CoreMesh>::VertexFace(m);
 }
 
-LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& settings)
+void printImportWarnings(const vrml::Diagnostics& diagnostics)
+{
+    const auto& kept = diagnostics.kept();
+    for (std::size_t i = 0; i < kept.size() && i < 12; ++i)
+        std::fprintf(stderr, "cadlod: warning: %s: %s: %s\n", kept[i].where.c_str(), kept[i].kind.c_str(),
+                     kept[i].message.c_str());
+}
+
+int sceneToCoreMesh(vrml::Scene& scene, CoreMesh& m, const ImportSettings& settings)
+{
+    mesh_io::SceneToMeshOptions toMesh;
+    toMesh.mergeVertices = settings.mergeVertices;
+    toMesh.mergeTolerance = settings.mergeTolerance;
+    return mesh_io::sceneToMesh(scene, m, toMesh, progress::callback);
+}
+
+LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& settings, vrml::Scene* assembly)
 {
     vrml::ImportOptions options;
     options.unitScale = settings.unitScale;
     options.recomputeNormals = settings.recomputeNormals;
+    if (settings.keepInstances && assembly)
+        options.instances = vrml::Instances::Keep;
     options.progress = [](double f) { progress::report(int(60 * f), "Reading VRML"); };
     vrml::ImportResult imported = vrml::importVrmlFile(path, options);
     if (!imported.ok())
         throw InputError(imported.error);
-    const auto& kept = imported.scene.diagnostics.kept();
-    for (std::size_t i = 0; i < kept.size() && i < 12; ++i)
-        std::fprintf(stderr, "cadlod: warning: %s: %s: %s\n", kept[i].where.c_str(), kept[i].kind.c_str(),
-                     kept[i].message.c_str());
+    printImportWarnings(imported.scene.diagnostics);
     LoadedMesh info;
     info.format = InputFormat::Vrml;
+    if (!imported.scene.assembly.empty()) {
+        info.parts = imported.scene.assembly.geometries.size();
+        info.placements = imported.scene.assembly.placementCount();
+        *assembly = std::move(imported.scene);
+        return info;
+    }
     info.parts = imported.scene.parts.size();
-    mesh_io::SceneToMeshOptions toMesh;
-    toMesh.mergeVertices = settings.mergeVertices;
-    toMesh.mergeTolerance = settings.mergeTolerance;
-    info.mergedVertices = mesh_io::sceneToMesh(imported.scene, m, toMesh, progress::callback);
+    info.mergedVertices = sceneToCoreMesh(imported.scene, m, settings);
     if (m.fn == 0)
         throw InputError(path + ": no triangles in the scene");
     return info;
@@ -191,11 +209,15 @@ flt::LodModel readFlt(const std::string& path)
     return model;
 }
 
-LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& settings)
+LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& settings, vrml::Scene* assembly)
 {
     LoadedMesh info;
     switch (formatOf(path)) {
-    case InputFormat::Vrml: info = loadVrml(path, m, settings); break;
+    case InputFormat::Vrml:
+        info = loadVrml(path, m, settings, assembly);
+        if (info.placements > 0)
+            return info;
+        break;
     case InputFormat::OpenFlight: info = loadFlt(path, m, settings); break;
     case InputFormat::Ply: info = loadWithVcg<vcg::tri::io::ImporterPLY<CoreMesh>>(
         path, m, InputFormat::Ply, [](int rc) { return vcg::tri::io::ImporterPLY<CoreMesh>::ErrorCritical(rc); }); break;
@@ -209,6 +231,19 @@ LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& 
         throw InputError(path + ": no triangles");
     prepareForSimplifier(m);
     return info;
+}
+
+void partToMesh(std::vector<vrml::Part>&& parts, const std::string& name, CoreMesh& m, const ImportSettings& settings,
+                LoadedMesh& info)
+{
+    vrml::Scene scene;
+    scene.parts = std::move(parts);
+    info.format = InputFormat::Vrml;
+    info.parts = scene.parts.size();
+    info.mergedVertices = sceneToCoreMesh(scene, m, settings);
+    if (m.fn == 0)
+        throw InputError(name + ": no triangles in the part");
+    prepareForSimplifier(m);
 }
 
 void saveMesh(const std::string& path, CoreMesh& m, const SaveSettings& settings)

@@ -41,6 +41,7 @@ struct GeometryScope {
     std::size_t geometry = 0;
     std::vector<std::string> names;
     std::map<std::tuple<int, float, float, float, float, std::string>, size_t> partIndex;
+    Owner shapes;  // the owner of its shapes that have no DEF'd node of their own above them
 };
 
 struct EvalContext {
@@ -56,6 +57,10 @@ struct EvalContext {
 
     Owner newOwner(const std::string& name) { return {nextOwnerId++, name}; }
     Part& part(const Owner& owner, const std::array<float, 4>& color, const std::string& texture = {});
+    // Whose part a shape's faces go to: `owner` (the nearest DEF'd node above it), else the shape
+    // itself, named by `path`. In a shared geometry, such shapes are the faces of one part, named
+    // after the geometry: its placements are what a user picks.
+    Owner shapeOwner(const Owner& owner, const std::string& path);
 
     bool keepsInstances() const { return keepInstances; }
     // With instances kept: `key` (a shared node, an Inline file) placed at `world`. The first

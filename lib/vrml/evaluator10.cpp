@@ -217,7 +217,7 @@ private:
         if (!ctx_.admit(node, true)) return true;
         ++ctx_.scene.stats.shapes;
         const std::vector<float> materials = materialsRgba(s);
-        Part& part = ctx_.part(owner.id < 0 ? ctx_.newOwner(path) : owner, firstMaterial(materials), s.texture);
+        Part& part = ctx_.part(ctx_.shapeOwner(owner, path), firstMaterial(materials), s.texture);
         const size_t before = part.triangleCount();
         emitShape(n, s, materials, part);
         countShapeTriangles(t, before, part, ctx_.scene.stats);

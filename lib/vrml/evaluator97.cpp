@@ -106,7 +106,7 @@ private:
         } else if (type == "Inline") {
             ctx_.loadInline(stringsField(*node, "url"), node->where, world, here);
         } else if (type == "Shape") {
-            if (ctx_.admit(node, false)) shape(*node, world, here.id < 0 ? ctx_.newOwner(path + "/Shape") : here);
+            if (ctx_.admit(node, false)) shape(*node, world, ctx_.shapeOwner(here, path + "/Shape"));
         } else if (!ignoredNodeTypes().count(type)) {
             ctx_.scene.diagnostics.warn("unknown node", node->where, "node " + type + " ignored");
         }

@@ -31,6 +31,15 @@ Part& EvalContext::part(const Owner& owner, const std::array<float, 4>& color, c
     return p;
 }
 
+Owner EvalContext::shapeOwner(const Owner& owner, const std::string& path)
+{
+    if (owner.id >= 0) return owner;
+    if (!keepsInstances() || scopes.empty() || scopes.back().geometry == 0) return newOwner(path);
+    GeometryScope& scope = scopes.back();
+    if (scope.shapes.id < 0) scope.shapes = newOwner(scene.assembly.geometries[scope.geometry].name);
+    return scope.shapes;
+}
+
 void EvalContext::placeInstance(const std::string& key, const std::string& name, const Mat4& world,
                                 const std::string& where, const std::function<void()>& evaluate)
 {
@@ -40,7 +49,7 @@ void EvalContext::placeInstance(const std::string& key, const std::string& name,
     if (fresh) {
         geometries.push_back(Geometry{name, {}, {}});
         reading.push_back(true);
-        scopes.push_back(GeometryScope{g, {}, {}});
+        scopes.push_back(GeometryScope{g, {}, {}, {}});
         evaluate();
         scopes.pop_back();
         reading[g] = false;
