@@ -21,7 +21,8 @@ struct Indices {
 
 class AssemblyCollector : public osg::NodeVisitor {
 public:
-    explicit AssemblyCollector(OsgAssemblyProbe& probe) : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN), probe_(probe)
+    AssemblyCollector(OsgAssemblyProbe& probe, const std::string& modelName)
+        : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN), probe_(probe), modelName_(modelName)
     {
         matrices_.push_back(osg::Matrixd::identity());
     }
@@ -81,6 +82,8 @@ private:
         if (node.getNumParents() > 1)
             shared_.insert(&node);
         if (!node.getName().empty()) {
+            if (node.getName() != modelName_ && placement().empty())
+                ++probe_.placements[node.getName()].visits;
             names_.push_back(node.getName());
             ++probe_.named[node.getName()].visits;
         }
@@ -112,6 +115,8 @@ private:
             probe_.finestTriangles.push_back(tri);
             for (const std::string& name : names_)
                 note(probe_.named[name], tri);
+            if (!placement().empty())
+                note(probe_.placements[placement()], tri);
         }
     }
 
@@ -125,7 +130,17 @@ private:
             }
     }
 
+    // The outermost name on the path that is not the model's.
+    std::string placement() const
+    {
+        for (const std::string& name : names_)
+            if (name != modelName_)
+                return name;
+        return {};
+    }
+
     OsgAssemblyProbe& probe_;
+    std::string modelName_;
     std::vector<osg::Matrixd> matrices_;
     std::vector<std::string> names_;
     std::set<const osg::Node*> shared_, lods_, subgraphs_;
@@ -133,7 +148,7 @@ private:
 
 }  // namespace
 
-OsgAssemblyProbe probeAssemblyWithOsg(const std::string& path)
+OsgAssemblyProbe probeAssemblyWithOsg(const std::string& path, const std::string& modelName)
 {
     OsgAssemblyProbe probe;
     osg::ref_ptr<osgDB::Options> options = new osgDB::Options;
@@ -144,7 +159,7 @@ OsgAssemblyProbe probeAssemblyWithOsg(const std::string& path)
     if (!root)
         return probe;
     probe.loaded = true;
-    AssemblyCollector collector(probe);
+    AssemblyCollector collector(probe, modelName);
     root->accept(collector);
     collector.finish();
     return probe;

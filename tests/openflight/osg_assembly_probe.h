@@ -22,6 +22,8 @@ struct OsgAssemblyProbe {
     bool loaded = false;
     double loadSeconds = 0;
     std::map<std::string, OsgNamedNode> named;
+    // The outermost named nodes below the model's root (named after the model): the placements.
+    std::map<std::string, OsgNamedNode> placements;
     std::vector<std::array<std::array<double, 3>, 3>> finestTriangles;  // world coordinates
     std::size_t sharedNodes = 0;     // distinct nodes with more than one parent
     std::size_t lodNodes = 0;        // distinct LOD nodes
@@ -29,6 +31,7 @@ struct OsgAssemblyProbe {
     std::size_t drawables = 0;       // drawables of the finest levels, as drawn
 };
 
-OsgAssemblyProbe probeAssemblyWithOsg(const std::string& path);
+// `modelName`: the name of the model's root group (the header's and the root Group's ID).
+OsgAssemblyProbe probeAssemblyWithOsg(const std::string& path, const std::string& modelName = "");
 
 }  // namespace cadlod::test
