@@ -4,6 +4,7 @@
 #include "osg_assembly_probe.h"
 #include "byte_access.h"
 
+#include "openflight/flt_reader.h"
 #include "openflight/instanced_writer.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +12,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <algorithm>
+#include <iterator>
+#include <set>
 
 #include <unistd.h>
 
@@ -163,4 +167,80 @@ TEST(InstancedWriter, FaceRecordsAreRefused)
     std::string error;
     EXPECT_FALSE(flt::writeInstancedOpenFlight(threeCubesOneMirrored(), faces, bytes, error));
     EXPECT_NE(error.find("Mesh records"), std::string::npos) << error;
+}
+
+// cadlod's own reader (the MeshLab import, `cadlod info`, `cadlod report`) reads every placement
+// as a copy of its part where OSG draws it, the k-th level of every part as level k.
+TEST(InstancedWriter, OurReaderPlacesEveryInstanceAsOsgDoes)
+{
+    flt::InstancedModel m = threeCubesOneMirrored();
+    m.placements.push_back(placed("Mirror/B", -30, -1));
+    flt::InstancedWriteStats written;
+    const std::string path = writeToTemp(m, written);
+    flt::LodModel read;
+    flt::ReadStats stats;
+    std::string error;
+    ASSERT_TRUE(flt::readOpenFlightFile(path, read, error, &stats)) << error;
+    EXPECT_EQ(stats.instanceReferences, written.instanceReferences);
+    ASSERT_EQ(read.levels.size(), 2u);
+    const flt::Level& finest = read.levels[flt::finestLevel(read)];
+    EXPECT_EQ(finest.triangleCount(), 5u * 12);
+    EXPECT_EQ(read.levels[1].triangleCount(), 5u * 6);
+    const OsgAssemblyProbe osg = probeAssemblyWithOsg(path, "asm");
+    std::multiset<std::array<long, 9>> ours, theirs;
+    auto key = [](double x) { return std::lround(x * 1e4); };
+    for (const flt::Part& p : finest.parts)
+        for (const flt::Triangle& t : p.triangles) {
+            std::array<long, 9> k{};
+            for (int c = 0; c < 3; ++c)
+                for (int d = 0; d < 3; ++d)
+                    k[size_t(3 * c + d)] = key(p.positions[t[size_t(c)]][size_t(d)]);
+            ours.insert(k);
+        }
+    for (const auto& t : osg.finestTriangles) {
+        std::array<long, 9> k{};
+        for (int c = 0; c < 3; ++c)
+            for (int d = 0; d < 3; ++d)
+                k[size_t(3 * c + d)] = key(t[size_t(c)][size_t(d)]);
+        theirs.insert(k);
+    }
+    // The same triangles, the same corners in the same turn (strips may start a triangle
+    // at another corner: compare each triangle from its smallest corner).
+    auto canonical = [](std::multiset<std::array<long, 9>> in) {
+        std::multiset<std::array<long, 9>> out;
+        for (auto t : in) {
+            std::array<long, 9> best = t;
+            for (int r = 1; r < 3; ++r) {
+                std::array<long, 9> turned{};
+                for (int c = 0; c < 3; ++c)
+                    for (int d = 0; d < 3; ++d)
+                        turned[size_t(3 * c + d)] = t[size_t(3 * ((c + r) % 3) + d)];
+                best = std::min(best, turned);
+            }
+            out.insert(best);
+        }
+        return out;
+    };
+    const auto a = canonical(ours), b = canonical(theirs);
+    EXPECT_EQ(a.size(), b.size());
+    std::vector<std::array<long, 9>> onlyOurs, onlyTheirs;
+    std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(onlyOurs));
+    std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(onlyTheirs));
+    EXPECT_TRUE(onlyOurs.empty() && onlyTheirs.empty())
+        << onlyOurs.size() << " triangles only ours, " << onlyTheirs.size() << " only OSG's, the first at x = "
+        << (onlyOurs.empty() ? 0 : onlyOurs[0][0]) << " / " << (onlyTheirs.empty() ? 0 : onlyTheirs[0][0]);
+    std::remove(path.c_str());
+}
+
+TEST(InstancedWriter, AReferenceWithoutItsDefinitionIsAnError)
+{
+    std::vector<std::uint8_t> bytes;
+    std::string error;
+    ASSERT_TRUE(flt::writeInstancedOpenFlight(threeCubesOneMirrored(), flt::WriteOptions{}, bytes, error)) << error;
+    for (std::size_t at = 0; at + 4 <= bytes.size(); at += be16(bytes, at + 2))
+        if (be16(bytes, at) == flt::opcode::InstanceReference)
+            bytes[at + 7] = 9;  // definition 9: none
+    flt::LodModel read;
+    EXPECT_FALSE(flt::readOpenFlight(bytes.data(), bytes.size(), read, error));
+    EXPECT_NE(error.find("refers to definition 9"), std::string::npos) << error;
 }
