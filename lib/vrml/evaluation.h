@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <tuple>
 
@@ -68,6 +69,8 @@ struct EvalContext {
     // its own, evaluated in `frame`. A key met again inside itself is refused.
     void placeInstance(const std::string& key, const std::string& name, const Mat4& world, const std::string& where,
                        const std::function<void()>& evaluate);
+    // Expanding: counts a use of the shared node `key` after its first (SceneStats::expandedCopies).
+    void noteExpandedUse(const std::string& key);
     // Around an unshared DEF'd node, with instances kept: its name goes into the placements'.
     void enterNamed(const Node& node);
     void leaveNamed(const Node& node);
@@ -87,6 +90,7 @@ struct EvalContext {
     std::vector<GeometryScope> scopes;   // with instances kept: back() is being read
     std::map<std::string, std::size_t> geometryOfKey;
     std::vector<bool> reading;           // per geometry: being read now
+    std::set<std::string> expandedKeys;  // expanding: the shared nodes met so far
     InstancingBudget budget;
     std::string error;  // fatal: the scene would exceed the triangle limit
 };

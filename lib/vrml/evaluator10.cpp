@@ -80,9 +80,12 @@ public:
             ctx_.scene.diagnostics.warn("too deep", node->where, "scene nesting too deep; subtree skipped");
             return;
         }
-        if (ctx_.keepsInstances() && node->useCount > 0 && node->type == "Separator") {
-            place(node, state, depth);
-            return;
+        if (node->useCount > 0 && node->type == "Separator") {
+            if (ctx_.keepsInstances()) {
+                place(node, state, depth);
+                return;
+            }
+            ctx_.noteExpandedUse(instanceKey(*node, state));
         }
         ctx_.enterNamed(*node);
         evaluate(node, state, owner, path, depth);
@@ -92,15 +95,20 @@ public:
 private:
     // A USE'd Separator is one geometry per traversal state it is met in: what it draws depends
     // on the coordinates, materials and hints in force; its transform goes to the placement.
-    void place(const NodePtr& node, const State& state, int depth)
+    static std::string instanceKey(const Node& node, const State& state)
     {
         char key[200];
-        std::snprintf(key, sizeof key, "node %p %p %p %p %p %p %s %s %d %d %g", static_cast<const void*>(node.get()),
+        std::snprintf(key, sizeof key, "node %p %p %p %p %p %p %s %s %d %d %g", static_cast<const void*>(&node),
                       static_cast<const void*>(state.coords), static_cast<const void*>(state.normals),
                       static_cast<const void*>(state.texCoords), static_cast<const void*>(state.diffuse),
                       static_cast<const void*>(state.transparency), state.normalBinding.c_str(),
                       state.materialBinding.c_str(), int(state.ccw), int(state.convex), double(state.creaseAngle));
-        ctx_.placeInstance(key + std::string(" ") + state.texture, node->defName, state.world, node->where, [&] {
+        return key + std::string(" ") + state.texture;
+    }
+
+    void place(const NodePtr& node, const State& state, int depth)
+    {
+        ctx_.placeInstance(instanceKey(*node, state), node->defName, state.world, node->where, [&] {
             State local = state;
             local.world = ctx_.frame;
             evaluate(node, local, Owner{}, node->defName, depth);

@@ -68,10 +68,14 @@ public:
             ctx_.scene.diagnostics.warn("too deep", node->where, "scene nesting too deep; subtree skipped");
             return;
         }
-        if (ctx_.keepsInstances() && isInstance(*node)) {
-            ctx_.placeInstance(instanceKey(*node), node->defName, world, node->where,
-                               [&] { evaluate(node, ctx_.frame, Owner{}, node->defName, depth); });
-            return;
+        if (isInstance(*node)) {
+            if (!ctx_.keepsInstances()) {
+                ctx_.noteExpandedUse(instanceKey(*node));
+            } else {
+                ctx_.placeInstance(instanceKey(*node), node->defName, world, node->where,
+                                   [&] { evaluate(node, ctx_.frame, Owner{}, node->defName, depth); });
+                return;
+            }
         }
         ctx_.enterNamed(*node);
         evaluate(node, world, owner, path, depth);

@@ -63,6 +63,11 @@ void EvalContext::placeInstance(const std::string& key, const std::string& name,
     geometries[scopes.back().geometry].children.push_back({g, world * frameInverse, placed.empty() ? name : placed});
 }
 
+void EvalContext::noteExpandedUse(const std::string& key)
+{
+    if (!expandedKeys.insert(key).second) ++scene.stats.expandedCopies;
+}
+
 void EvalContext::enterNamed(const Node& node)
 {
     if (keepsInstances() && !scopes.empty() && !node.defName.empty() && node.useCount == 0)
@@ -354,8 +359,10 @@ private:
             if (ctx_.keepsInstances())
                 ctx_.placeInstance("file " + key, fs::path(path).stem().string(), world, where,
                                    [&] { read(ctx_.frame, Owner{}); });
-            else
+            else {
+                ctx_.noteExpandedUse("file " + key);
                 read(world, owner);
+            }
             return;
         }
         std::string list;

@@ -19,6 +19,9 @@ struct SceneStats {
     size_t lineSets = 0;           // IndexedLineSet / PointSet: counted, not imported
     size_t pointSets = 0;
     size_t inlinesLoaded = 0;
+    // Expanding: uses of a shared node (a USE'd DEF that holds shapes, an Inline file) after
+    // its first, each a copy. Keeping instances makes them placements instead.
+    size_t expandedCopies = 0;
     // Triangles by source, for comparing with other readers: IndexedFaceSet, ElevationGrid,
     // Extrusion and Box/Cube tessellate the same everywhere; Sphere/Cylinder/Cone do not.
     size_t meshTriangles = 0;

@@ -84,6 +84,7 @@ TEST(VrmlAssembly, SharedNodesAreReadOncePlacedWhereExpandingPutsThem)
     EXPECT_EQ(kept.assembly.geometries.size(), 3u);
     EXPECT_EQ(kept.stats.meshTriangles, 24u);  // each box read once
     EXPECT_EQ(expanded.triangleCount(), 12u * 10);
+    EXPECT_EQ(expanded.stats.expandedCopies, 8u) << "CAP placed 7 times, BOARD 3 times";
     EXPECT_EQ(placedCorners(kept), expandedCorners(expanded));
 }
 
