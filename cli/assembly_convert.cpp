@@ -3,6 +3,10 @@
 #include "cli_errors.h"
 #include "progress_bar.h"
 
+#include "lod/lod_chain.h"
+
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 namespace cadlod::cli {
@@ -28,6 +32,39 @@ std::vector<std::size_t> placedGeometries(const std::vector<vrml::Placement>& pl
     return order;
 }
 
+double radiusAbout(const flt::Level& level)
+{
+    double r2 = 0;
+    for (const flt::Part& part : level.parts)
+        for (const flt::Vec3d& p : part.positions) {
+            const double dx = p[0] - level.center[0], dy = p[1] - level.center[1], dz = p[2] - level.center[2];
+            r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
+        }
+    return std::sqrt(r2);
+}
+
+// A part's LOD node picks its level by the eye's distance to the part's centre. Pushed out
+// by the part's radius, every switch keeps its promise at the part's nearest point too: a
+// viewer beside a long part is nearer to its end than to its centre.
+void holdAtNearestPoint(std::vector<flt::Level>& levels, LodSetResult& result)
+{
+    if (levels.empty())
+        return;
+    const double radius = radiusAbout(levels.front());
+    auto shift = [radius](double& d) {
+        if (d > 0 && d < kNeverCulled)
+            d += radius;
+    };
+    for (flt::Level& l : levels) {
+        shift(l.switchIn);
+        shift(l.switchOut);
+    }
+    for (LodLevel& l : result.levels) {
+        shift(l.switchIn);
+        shift(l.switchOut);
+    }
+}
+
 PartChain convertPart(vrml::Geometry& geometry, const ImportSettings& settings, const BuildChain& buildChain,
                       flt::PartDefinition& definition, std::size_t& skippedFaces)
 {
@@ -49,6 +86,7 @@ PartChain convertPart(vrml::Geometry& geometry, const ImportSettings& settings, 
     skippedFaces += skipped;
     definition.name = geometry.name;
     definition.levels = std::move(levels.levels);
+    holdAtNearestPoint(definition.levels, chain.result);
     return chain;
 }
 

@@ -1,6 +1,7 @@
 // An assembly whose instances are kept, to an instanced OpenFlight model: each distinct
 // part through a LOD chain of its own, in its own frame (so its switch distances hold in
-// every placement, OSG measuring the eye's distance in the part's frame), then one placement
+// every placement, OSG measuring the eye's distance in the part's frame), its switch
+// distances pushed out by its radius (so they hold at its nearest point), then one placement
 // per use, named by its path.
 #pragma once
 #include "lod_output.h"

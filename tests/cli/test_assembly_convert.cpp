@@ -184,3 +184,43 @@ TEST(CliAssembly, TooManyPlacementsFailWithoutOutput)
 }
 
 }  // namespace cadlod::test
+
+namespace cadlod::test {
+
+// A part's LOD node holds its pixel error at the part's nearest point: its switch distances
+// are the part's own chain's (converted alone), pushed out by its radius about the centre.
+TEST(CliAssembly, EveryPartSwitchesItsOwnChainPushedOutByItsRadius)
+{
+    const std::string dir = freshDirectory("assembly_radius");
+    const std::string input = writeAssembly(dir);
+    ASSERT_EQ(runCadlod({"convert", input, "-o", dir + "/asm.flt", "--unit", "mm", "--report", dir + "/asm.json"})
+                  .exitCode, 0);
+    const CliRun alone = runCadlod({"convert", dir + "/knob.wrl", "-o", dir + "/knob.flt", "--unit", "mm", "--report",
+                                    dir + "/knob.json"});
+    ASSERT_EQ(alone.exitCode, 0) << alone.stderrText;
+    const nlohmann::json assembly = nlohmann::json::parse(readFile(dir + "/asm.json"));
+    const nlohmann::json knob = nlohmann::json::parse(readFile(dir + "/knob.json"));
+    const nlohmann::json* placed = nullptr;
+    for (const auto& part : assembly.at("parts"))
+        if (part.at("name") == "knob")
+            placed = &part;
+    ASSERT_NE(placed, nullptr);
+    const auto& own = knob.at("levels");
+    const auto& shifted = placed->at("levels");
+    ASSERT_EQ(own.size(), shifted.size());
+    ASSERT_GE(own.size(), 3u);
+    // The knob: a sphere of 2 mm about the origin and a pin along y (VRML's cylinder axis),
+    // 3 mm long, 0.5 mm thick, centred 2 mm up; its box centre is at z = 0.25 mm, its farthest
+    // vertices where the pin's ends reach z = 2.5 mm, 1.5 mm out along y.
+    const double radius = std::hypot(0.0015, 0.00225);
+    EXPECT_DOUBLE_EQ(shifted[0].at("switchOut").get<double>(), 0.0);
+    for (std::size_t k = 0; k + 1 < own.size(); ++k) {
+        EXPECT_NEAR(shifted[k].at("switchIn").get<double>(), own[k].at("switchIn").get<double>() + radius, 2e-5)
+            << "level " << k;
+        EXPECT_NEAR(shifted[k + 1].at("switchOut").get<double>(), own[k + 1].at("switchOut").get<double>() + radius,
+                    2e-5)
+            << "level " << k + 1;
+    }
+}
+
+}  // namespace cadlod::test
