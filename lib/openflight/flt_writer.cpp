@@ -22,21 +22,12 @@ public:
 
     void write()
     {
-        HeaderFields header;
-        header.id = model_.name;
-        header.units = model_.units;
-        writeHeader(w_, header);
-        writeColorPalette(w_);
-        writeMaterial(w_, MaterialFields{});
+        writeDatabaseHead(w_, model_.name, model_.units);
         if (options_.geometry == GeometryRecords::Faces)
             levels_.writeSharedVertexPalette(model_.levels);
-        writePush(w_);
-        writeGroup(w_, model_.name);
-        writeLongIdIfNeeded(w_, model_.name);
-        writePush(w_);
+        openRootGroup(w_, model_.name);
         levels_.writeLevels(model_.levels, writesLodRecords(model_.levels));
-        writePop(w_);
-        writePop(w_);
+        closeRootGroup(w_);
     }
 
 private:
@@ -132,13 +123,9 @@ bool writeOpenFlight(const LodModel& model, const WriteOptions& options, std::ve
 bool writeOpenFlightFile(const std::string& path, const LodModel& model, const WriteOptions& options,
                          std::string& error, WriteStats* stats)
 {
-    std::vector<std::uint8_t> bytes;
-    if (!writeOpenFlight(model, options, bytes, error, stats)) {
-        error = path + ": " + error;
-        return false;
-    }
-    // Through a temporary file renamed into place: never a truncated .flt (atomic_file.h).
-    return writeFileAtomically(path, bytes, error);
+    return writeDatabaseFile(
+        path, [&](std::vector<std::uint8_t>& bytes, std::string& e) { return writeOpenFlight(model, options, bytes, e, stats); },
+        error);
 }
 
 }  // namespace cadlod::flt

@@ -1,6 +1,5 @@
 #include "openflight/instanced_writer.h"
 
-#include "openflight/atomic_file.h"
 #include "openflight/level_writer.h"
 
 #include <map>
@@ -34,21 +33,12 @@ public:
 
     bool write(std::string& error)
     {
-        HeaderFields header;
-        header.id = model_.name;
-        header.units = model_.units;
-        writeHeader(w_, header);
-        writeColorPalette(w_);
-        writeMaterial(w_, MaterialFields{});
-        writePush(w_);
-        writeGroup(w_, model_.name);
-        writeLongIdIfNeeded(w_, model_.name);
-        writePush(w_);
+        writeDatabaseHead(w_, model_.name, model_.units);
+        openRootGroup(w_, model_.name);
         for (const PartPlacement& p : model_.placements)
             if (!writePlacement(p, error))
                 return false;
-        writePop(w_);
-        writePop(w_);
+        closeRootGroup(w_);
         return true;
     }
 
@@ -171,12 +161,12 @@ bool writeInstancedOpenFlight(const InstancedModel& model, const WriteOptions& o
 bool writeInstancedOpenFlightFile(const std::string& path, const InstancedModel& model, const WriteOptions& options,
                                   std::string& error, InstancedWriteStats* stats)
 {
-    std::vector<std::uint8_t> bytes;
-    if (!writeInstancedOpenFlight(model, options, bytes, error, stats)) {
-        error = path + ": " + error;
-        return false;
-    }
-    return writeFileAtomically(path, bytes, error);
+    return writeDatabaseFile(
+        path,
+        [&](std::vector<std::uint8_t>& bytes, std::string& e) {
+            return writeInstancedOpenFlight(model, options, bytes, e, stats);
+        },
+        error);
 }
 
 }  // namespace cadlod::flt

@@ -1,5 +1,6 @@
 #include "openflight/level_writer.h"
 
+#include "openflight/atomic_file.h"
 #include "openflight/triangle_strip.h"
 
 #include <map>
@@ -40,6 +41,41 @@ Part turnedRound(const Part& part)
 }
 
 }  // namespace
+
+void writeDatabaseHead(ByteWriter& w, const std::string& name, Units units)
+{
+    HeaderFields header;
+    header.id = name;
+    header.units = units;
+    writeHeader(w, header);
+    writeColorPalette(w);
+    writeMaterial(w, MaterialFields{});
+}
+
+void openRootGroup(ByteWriter& w, const std::string& name)
+{
+    writePush(w);
+    writeGroup(w, name);
+    writeLongIdIfNeeded(w, name);
+    writePush(w);
+}
+
+void closeRootGroup(ByteWriter& w)
+{
+    writePop(w);
+    writePop(w);
+}
+
+bool writeDatabaseFile(const std::string& path,
+                       const std::function<bool(std::vector<std::uint8_t>&, std::string&)>& write, std::string& error)
+{
+    std::vector<std::uint8_t> bytes;
+    if (!write(bytes, error)) {
+        error = path + ": " + error;
+        return false;
+    }
+    return writeFileAtomically(path, bytes, error);
+}
 
 bool writesLodRecords(const std::vector<Level>& levels)
 {

@@ -5,9 +5,21 @@
 
 #include "openflight/flt_writer.h"
 
+#include <functional>
 #include <vector>
 
 namespace cadlod::flt {
+
+// Header, Color Palette and Material Palette: how every database starts.
+void writeDatabaseHead(ByteWriter& w, const std::string& name, Units units);
+// The root Group, named after the model, with the Push into it; closeRootGroup pops out.
+void openRootGroup(ByteWriter& w, const std::string& name);
+void closeRootGroup(ByteWriter& w);
+
+// `write(bytes, error)` makes the database; it goes to `path` through a temporary file
+// renamed into place (atomic_file.h), so an interrupted write never leaves a truncated .flt.
+bool writeDatabaseFile(const std::string& path,
+                       const std::function<bool(std::vector<std::uint8_t>&, std::string&)>& write, std::string& error);
 
 // LOD records are written when there are several levels or the one level has a range.
 bool writesLodRecords(const std::vector<Level>& levels);
