@@ -82,7 +82,7 @@ private:
         if (node.getNumParents() > 1)
             shared_.insert(&node);
         if (!node.getName().empty()) {
-            if (node.getName() != modelName_ && placement().empty())
+            if (!isModelName(node.getName()) && placement().empty())
                 ++probe_.placements[node.getName()].visits;
             names_.push_back(node.getName());
             ++probe_.named[node.getName()].visits;
@@ -134,9 +134,15 @@ private:
     std::string placement() const
     {
         for (const std::string& name : names_)
-            if (name != modelName_)
+            if (!isModelName(name))
                 return name;
         return {};
+    }
+
+    // The header's ID holds 7 characters of the model's name; the root Group all of it.
+    bool isModelName(const std::string& name) const
+    {
+        return name == modelName_ || (name.size() == 7 && modelName_.compare(0, 7, name) == 0);
     }
 
     OsgAssemblyProbe& probe_;
