@@ -65,6 +65,7 @@ LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& s
         o.hausdorffSamples = a.samples;
         applyProtection(a.protection, o.simplify);
         o.runTogether = runOnWorkers;
+        o.distanceUnit = "m";  // the importer scaled the model to metres
         CoreMesh scratch;
         return buildLodChain<CoreMesh>(original, scratch, o, newLevel, progress::callback);
     }

@@ -52,6 +52,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <string>
 
 namespace cadlod {
 
@@ -64,6 +65,7 @@ struct LodChainOptions {
     SimplifyParams simplify;          // placement and protection; the budget is set per level
     int setId = 1;
     RunTogether runTogether;          // measuring a level beside the next collapses; empty: in sequence
+    std::string distanceUnit = "model units";  // how the progress names distances
 };
 
 // Where the model is this many pixels high (its diagonal), the pieces go into the far field

@@ -234,9 +234,10 @@ private:
         const bool farField = d >= dFarField_;
         if (farField)
             pieces_.startFarField();
-        if (progress_) {
-            char text[96];
-            std::snprintf(text, sizeof text, "Simplifying level %d, seen from %.3g model units", k + 1, d);
+        if (progress_ && planned) {  // the step halfway to the next level is part of it
+            char text[120];
+            std::snprintf(text, sizeof text, "Simplifying for %.3g %s and beyond (about %d levels)", d,
+                          options_.distanceUnit.c_str(), plannedLevels_);
             progress_(100 * std::min(k, plannedLevels_) / (plannedLevels_ + 1), text);
         }
         // Before the far field a collapse is held to the budget both by its quadric error and
