@@ -24,6 +24,16 @@ constexpr const char* kNormals = "vrmlNormals";
 constexpr const char* kUpAxis = "vrmlUpAxis";
 constexpr const char* kKicadUnits = "vrmlKicadUnits";
 
+// A speed only where the time says something: a small file reads in less than a clock tick.
+std::string importSpeed(std::size_t bytes, double seconds)
+{
+    if (seconds < 0.05)
+        return "";
+    char text[32];
+    std::snprintf(text, sizeof text, ", %.1f MB/s", bytes / 1e6 / seconds);
+    return text;
+}
+
 void logDiagnostics(MeshIOInterface& plugin, const vrml::Diagnostics& diag)
 {
     if (diag.total() == 0) return;
@@ -97,12 +107,12 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     char line[1024];
     std::snprintf(line, sizeof line,
                   "VRML %d import of %s: %zu parts, %d triangles, %d vertices (%d merged), %zu shapes, "
-                  "%zu faces skipped, %d faces repeating a vertex after welding removed, %zu line/point sets ignored, %zu inlines; %.1f MB in %.2f s (read %.2f s), "
-                  "%.1f MB/s",
+                  "%zu faces skipped, %d faces repeating a vertex after welding removed, %zu line/point sets ignored, %zu inlines; %.1f MB in %.2f s (read %.2f s)"
+                  "%s",
                   scene.version == 1 ? 1 : 2, qUtf8Printable(fileName), partTableHandle(m.cm)().size(), m.cm.fn,
                   m.cm.vn, merged, scene.stats.shapes, scene.stats.skippedFaces, built.facesRepeatingVertex,
                   scene.stats.lineSets + scene.stats.pointSets, scene.stats.inlinesLoaded, scene.stats.bytesRead / 1e6,
-                  seconds, parsedMs / 1000.0, scene.stats.bytesRead / 1e6 / seconds);
+                  seconds, parsedMs / 1000.0, importSpeed(scene.stats.bytesRead, seconds).c_str());
     report(plugin, GLLogStream::FILTER, std::string(line));
     report(plugin, GLLogStream::FILTER, "VRML import of " + fileName.toStdString() + ": " +
                                             result.assumed.describe(options.unitScale));
