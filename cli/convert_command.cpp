@@ -2,6 +2,7 @@
 // percentage list, one OpenFlight LOD model, optional JSON report.
 #include "cli_errors.h"
 #include "cli_options.h"
+#include "input_losses.h"
 #include "commands.h"
 #include "lod_output.h"
 #include "mesh_files.h"
@@ -14,6 +15,9 @@
 #include "openflight/flt_writer.h"
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <deque>
 #include <memory>
 
@@ -86,7 +90,7 @@ LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& s
     return buildLodSet<CoreMesh>(original, o, newLevel, progress::callback);
 }
 
-nlohmann::json optionsJson(const ConvertArgs& a)
+nlohmann::json optionsJson(const ConvertArgs& a, const LoadedMesh& loaded)
 {
     return {{"lod", a.lod},
             {"pixelError", a.pixelError},
@@ -97,12 +101,24 @@ nlohmann::json optionsJson(const ConvertArgs& a)
             {"proxyPixels", a.proxyPixels},
             {"fromOriginal", a.fromOriginal},
             {"samples", a.samples},
-            {"import", toJson(a.import)},
+            {"import", toJson(a.import, loaded)},
             {"simplify", toJson(a.protection)},
             {"export", toJson(a.exporting)}};
 }
 
-void printSummary(const LodSetResult& r, const flt::WriteStats& written, const std::string& output)
+// The model's bytes go to the OutputSet's temporary, renamed into place with the report.
+void writeFlt(OutputSet& outputs, const std::string& path, const flt::LodModel& model,
+              const flt::WriteOptions& options, flt::WriteStats& written)
+{
+    std::vector<std::uint8_t> bytes;
+    std::string error;
+    if (!flt::writeOpenFlight(model, options, bytes, error, &written))
+        throw InputError(path + ": " + error);
+    outputs.write(path, [&](const std::string& temporary) { return writeBytesTo(temporary, bytes); });
+}
+
+void printSummary(const LodSetResult& r, const flt::WriteStats& written, const std::string& output,
+                  const LoadedMesh& loaded)
 {
     std::fprintf(stderr, "cadlod: %s: %zu levels, %zu triangles, %zu bytes (model size %.6g)\n", output.c_str(),
                  r.levels.size(), written.triangles, written.bytes, r.modelSize);
@@ -113,15 +129,20 @@ void printSummary(const LodSetResult& r, const flt::WriteStats& written, const s
                      l.switchIn >= kNeverCulled ? "never" : std::to_string(l.switchIn).c_str());
     for (const std::string& w : r.warnings)
         std::fprintf(stderr, "cadlod: note: %s\n", w.c_str());
+    if (loaded.format == InputFormat::Vrml)
+        std::fprintf(stderr, "cadlod: input unit %s%s\n", loaded.unit.describe().c_str(),
+                     loaded.kicadHeader && !loaded.kicadUnitApplied ? "; KiCad StepUp header found, its 0.1 inch not applied" : "");
+    printFindingsSummary(loaded);
 }
 
 void runConvert(const ConvertArgs& a)
 {
     if (extensionOf(a.output) != "flt")
         throw UsageError(a.output + ": convert writes OpenFlight (.flt); use 'cadlod simplify' for PLY/OBJ/STL");
-    checkWritable(a.output, a.common.force);
+    OutputSet outputs(a.common.force);
+    outputs.add(a.output, "-o");
     if (!a.report.empty())
-        checkWritable(a.report, a.common.force);
+        outputs.add(a.report, "--report");
     const ImportSettings importing = importSettings(a.import);
     const SaveSettings saving = saveSettings(a.exporting);
     progress::enable(!a.common.quiet);
@@ -149,31 +170,65 @@ void runConvert(const ConvertArgs& a)
     flt::WriteOptions writeOptions = saving.flt;
     writeOptions.progress = [](int p) { progress::report(p, "Writing OpenFlight"); };
     flt::WriteStats written;
-    std::string error;
-    if (!flt::writeOpenFlightFile(a.output, model, writeOptions, error, &written))
-        throw InputError(error);
+    writeFlt(outputs, a.output, model, writeOptions, written);
     const double writeSeconds = secondsSince(t2);
     progress::finish();
-    if (!a.common.quiet)
-        printSummary(result, written, a.output);
-
-    if (a.report.empty())
+    if (a.report.empty()) {
+        outputs.commit();
+        if (!a.common.quiet)
+            printSummary(result, written, a.output, loaded);
         return;
+    }
+    nlohmann::json input{{"path", a.input}, {"format", formatName(loaded.format)}, {"parts", loaded.parts},
+                         {"faces", result.levels.front().faces}, {"mergedVertices", loaded.mergedVertices}};
+    input.update(findingsJson(loaded));
+    std::vector<std::string> warnings = warningLines(loaded);
+    warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
     nlohmann::json report{{"command", "convert"},
-                          {"input", {{"path", a.input}, {"format", formatName(loaded.format)}, {"parts", loaded.parts},
-                                     {"faces", result.levels.front().faces}, {"mergedVertices", loaded.mergedVertices}}},
+                          {"input", input},
                           {"output", {{"path", a.output}, {"bytes", written.bytes}, {"triangles", written.triangles},
                                       {"objects", written.objects}, {"lodNodes", written.lodNodes},
                                       {"skippedDegenerateFaces", skipped}}},
-                          {"options", optionsJson(a)},
+                          {"options", optionsJson(a, loaded)},
                           {"modelSize", result.modelSize},
                           {"levels", levelsJson(result, viewOf(a))},
                           {"droppedLevels", result.droppedLevels},
-                          {"warnings", result.warnings},
+                          {"warnings", warnings},
+                          {"warningCount", warningCount(loaded) + result.warnings.size()},
                           {"timings", {{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds},
                                        {"lodMeasureSeconds", result.measureSeconds},
                                        {"writeSeconds", writeSeconds}, {"totalSeconds", secondsSince(t0)}}}};
-    writeJsonFile(a.report, report);
+    outputs.write(a.report, [&](const std::string& temporary) { return writeJsonTo(temporary, report); });
+    outputs.commit();
+    if (!a.common.quiet)
+        printSummary(result, written, a.output, loaded);
+}
+
+// "auto" or a level list the LOD planner accepts (lod_plan.h), checked before any work.
+CLI::Validator levelListCheck()
+{
+    return CLI::Validator(
+        [](const std::string& list) -> std::string {
+            if (list == "auto")
+                return {};
+            const LevelPlan plan = planLevels(list, LevelSpec::ReductionPercent, std::numeric_limits<int>::max());
+            return plan.ok() ? std::string() : "--lod \"" + list + "\": " + plan.error;
+        },
+        "auto|LIST");
+}
+
+CLI::Validator openRange(double low, double high)
+{
+    return CLI::Validator(
+        [low, high](const std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (text.empty() || *end != '\0' || !(v > low && v < high))
+                return "'" + text + "' is not a number above " + std::to_string(int(low)) +
+                       (std::isfinite(high) ? " and below " + std::to_string(int(high)) : std::string());
+            return {};
+        },
+        "");
 }
 
 }  // namespace
@@ -186,16 +241,23 @@ void addConvertCommand(CLI::App& app)
     cmd->add_option("-o,--output", args->output, "Output .flt")->required();
     cmd->add_option("--lod", args->lod,
                     "auto: screen-space LOD chain; or a quoted list of reductions in % (\"50 60 70 80 90\")")
+        ->check(levelListCheck())
         ->capture_default_str();
     cmd->add_option("--pixel-error", args->pixelError, "Largest error on screen when a level is shown (px)")
+        ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    cmd->add_option("--fov", args->fov, "Vertical field of view of the simulator (degrees)")->capture_default_str();
-    cmd->add_option("--viewport", args->viewport, "Viewport height (px)")->capture_default_str();
+    cmd->add_option("--fov", args->fov, "Vertical field of view of the simulator (degrees)")
+        ->check(openRange(0.0, 180.0))
+        ->capture_default_str();
+    cmd->add_option("--viewport", args->viewport, "Viewport height (px)")->check(CLI::PositiveNumber)->capture_default_str();
     cmd->add_option("--distance-ratio", args->distanceRatio, "auto: ratio between consecutive level distances")
+        ->check(openRange(1.0, std::numeric_limits<double>::infinity()))
         ->capture_default_str();
     cmd->add_option("--proxy-pixels", args->proxyPixels, "auto: the box proxy serves below this height (px)")
+        ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     cmd->add_option("--cull-pixels", args->cullPixels, "auto: not drawn below this height (px); 0: never culled")
+        ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     cmd->add_flag("--from-original", args->fromOriginal, "List: simplify every level from the original");
     cmd->add_option("--samples", args->samples, "Hausdorff samples per side (0: automatic)");

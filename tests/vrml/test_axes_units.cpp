@@ -84,6 +84,9 @@ TEST(AxesAndUnits, KicadStepUpFilesAreScaledFromTenthsOfAnInchToMillimetres)
                                             "part.wrl", off);
     ASSERT_TRUE(raw.ok());
     EXPECT_FALSE(raw.assumed.kicadUnits);
+    EXPECT_TRUE(raw.assumed.kicadHeader);  // found, not applied: the log can say so
+    EXPECT_NE(raw.assumed.describe(1.0).find("its 0.1 inch not applied"), std::string::npos)
+        << raw.assumed.describe(1.0);
     expectPoint(raw.scene.parts[0], 1, 0.394, 0, 0);
 }
 
