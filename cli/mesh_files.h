@@ -38,7 +38,7 @@ struct LoadedMesh {
     flt::Units fltUnits = flt::Units::Meters;
     // VRML: the unit applied and why, KiCad's header, the importer's findings, and the
     // command's own warnings about the model (an implausible size for its unit).
-    UnitChoice unit{"as in the file", 1.0, "not applied: --unit is for VRML inputs"};
+    UnitChoice unit{"file units", 1.0, "--unit applies to VRML inputs only"};
     bool kicadHeader = false, kicadUnitApplied = false;
     vrml::Diagnostics findings;
     std::vector<std::string> notes;

@@ -43,8 +43,8 @@ void refuseUnrelated(const ReportArgs& a, const CoreMesh& original, const CoreMe
     const std::string why = whyNotASimplification(liveVertexBox(original), liveVertexBox(simplified));
     if (why.empty())
         return;
-    std::string units = "; " + a.original + " read in " + first.unit.describe() + ", " + a.simplified + " in " +
-                        second.unit.describe();
+    const std::string units = " " + a.original + " was read in " + first.unit.describe() + ", " + a.simplified +
+                              " in " + second.unit.describe();
     throw InputError(a.simplified + " cannot be a simplification of " + a.original + ": " + why + units);
 }
 

@@ -46,7 +46,9 @@ std::string UnitChoice::describe() const
         return unit + " (" + source + " " + unit + ")";
     if (source == "the KiCad StepUp header")
         return unit + " (" + source + "; --unit overrides it)";
-    return unit + " (" + source + ": no --unit given)";
+    if (source == "the default")
+        return unit + " (" + source + ": no --unit given)";
+    return unit + " (" + source + ")";
 }
 
 UnitChoice chooseUnit(const std::string& given, bool kicadApplied, const std::string& fallback, bool fallbackGiven)

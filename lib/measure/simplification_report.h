@@ -84,8 +84,8 @@ std::string whyNotASimplification(const vcg::Box3<S>& original, const vcg::Box3<
         for (const auto& [factor, names] : kUnits)
             if (std::abs(ratio / factor - 1.0) < 0.1)
                 unit = std::string("a different unit (") + names + ")?";
-        std::snprintf(why, sizeof why, "the result is %.3gx %s (bounding-box diagonals %.4g and %.4g): %s", ratio,
-                      db < da ? "smaller" : "larger", da, db, unit.c_str());
+        std::snprintf(why, sizeof why, "the result is %.*fx %s (bounding-box diagonals %.4g and %.4g): %s",
+                      ratio < 10 ? 1 : 0, ratio, db < da ? "smaller" : "larger", da, db, unit.c_str());
         return why;
     }
     double common2 = 0;
