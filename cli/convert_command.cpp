@@ -106,6 +106,28 @@ nlohmann::json optionsJson(const ConvertArgs& a, const LoadedMesh& loaded)
             {"export", toJson(a.exporting)}};
 }
 
+nlohmann::json reportJson(const ConvertArgs& a, const LoadedMesh& loaded, const LodSetResult& result,
+                          const flt::WriteStats& written, std::size_t skipped, const nlohmann::json& timings)
+{
+    nlohmann::json input{{"path", a.input}, {"format", formatName(loaded.format)}, {"parts", loaded.parts},
+                         {"faces", result.levels.front().faces}, {"mergedVertices", loaded.mergedVertices}};
+    input.update(findingsJson(loaded));
+    std::vector<std::string> warnings = warningLines(loaded);
+    warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
+    return {{"command", "convert"},
+            {"input", input},
+            {"output", {{"path", a.output}, {"bytes", written.bytes}, {"triangles", written.triangles},
+                        {"objects", written.objects}, {"lodNodes", written.lodNodes},
+                        {"skippedDegenerateFaces", skipped}}},
+            {"options", optionsJson(a, loaded)},
+            {"modelSize", result.modelSize},
+            {"levels", levelsJson(result, viewOf(a))},
+            {"droppedLevels", result.droppedLevels},
+            {"warnings", warnings},
+            {"warningCount", warningCount(loaded) + result.warnings.size()},
+            {"timings", timings}};
+}
+
 // The model's bytes go to the OutputSet's temporary, renamed into place with the report.
 void writeFlt(OutputSet& outputs, const std::string& path, const flt::LodModel& model,
               const flt::WriteOptions& options, flt::WriteStats& written)
@@ -173,32 +195,13 @@ void runConvert(const ConvertArgs& a)
     writeFlt(outputs, a.output, model, writeOptions, written);
     const double writeSeconds = secondsSince(t2);
     progress::finish();
-    if (a.report.empty()) {
-        outputs.commit();
-        if (!a.common.quiet)
-            printSummary(result, written, a.output, loaded);
-        return;
+    if (!a.report.empty()) {
+        const nlohmann::json timings{{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds},
+                                     {"lodMeasureSeconds", result.measureSeconds}, {"writeSeconds", writeSeconds},
+                                     {"totalSeconds", secondsSince(t0)}};
+        const nlohmann::json report = reportJson(a, loaded, result, written, skipped, timings);
+        outputs.write(a.report, [&](const std::string& temporary) { return writeJsonTo(temporary, report); });
     }
-    nlohmann::json input{{"path", a.input}, {"format", formatName(loaded.format)}, {"parts", loaded.parts},
-                         {"faces", result.levels.front().faces}, {"mergedVertices", loaded.mergedVertices}};
-    input.update(findingsJson(loaded));
-    std::vector<std::string> warnings = warningLines(loaded);
-    warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
-    nlohmann::json report{{"command", "convert"},
-                          {"input", input},
-                          {"output", {{"path", a.output}, {"bytes", written.bytes}, {"triangles", written.triangles},
-                                      {"objects", written.objects}, {"lodNodes", written.lodNodes},
-                                      {"skippedDegenerateFaces", skipped}}},
-                          {"options", optionsJson(a, loaded)},
-                          {"modelSize", result.modelSize},
-                          {"levels", levelsJson(result, viewOf(a))},
-                          {"droppedLevels", result.droppedLevels},
-                          {"warnings", warnings},
-                          {"warningCount", warningCount(loaded) + result.warnings.size()},
-                          {"timings", {{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds},
-                                       {"lodMeasureSeconds", result.measureSeconds},
-                                       {"writeSeconds", writeSeconds}, {"totalSeconds", secondsSince(t0)}}}};
-    outputs.write(a.report, [&](const std::string& temporary) { return writeJsonTo(temporary, report); });
     outputs.commit();
     if (!a.common.quiet)
         printSummary(result, written, a.output, loaded);
