@@ -2,6 +2,7 @@
 // LOD levels with their ranges.
 #include "cli_options.h"
 #include "commands.h"
+#include "input_losses.h"
 #include "mesh_files.h"
 #include "progress_bar.h"
 
@@ -39,7 +40,9 @@ void runInfo(const std::string& path)
 {
     progress::enable(false);
     CoreMesh m;
-    const LoadedMesh loaded = loadMesh(path, m, ImportSettings{});
+    ImportSettings settings;
+    settings.allowPartial = true;  // shows what can be read; the losses are listed as warnings
+    const LoadedMesh loaded = loadMesh(path, m, settings);
     const vcg::Box3d box = liveVertexBox(m);
     std::printf("file         %s\nformat       %s\nparts        %zu\ntriangles    %d\nvertices     %d\n", path.c_str(),
                 formatName(loaded.format), loaded.parts, m.fn, m.vn);
@@ -47,8 +50,13 @@ void runInfo(const std::string& path)
                 box.min[2], box.max[0], box.max[1], box.max[2], box.Diag());
     if (loaded.format == InputFormat::OpenFlight)
         printFltLevels(path);
+    else if (loaded.kicadUnitApplied)
+        std::printf("units        %s, scaled to metres\n", loaded.unit.describe().c_str());
     else
         std::printf("units guess  %s\n", unitsGuess(box.Diag()));
+    if (!geometryLosses(loaded.findings).empty())
+        std::printf("incomplete   %zu finding(s) lost geometry (see the warnings)\n",
+                    geometryLosses(loaded.findings).size());
 }
 
 }  // namespace

@@ -84,6 +84,9 @@ TEST(CliInputLosses, AllowPartialConvertsWhatWasReadAndTheReportNamesTheLoss)
     EXPECT_GE(report.at("warningCount").get<int>(), 1);
     EXPECT_TRUE(report.at("options").at("import").at("allowPartial").get<bool>());
     EXPECT_EQ(runCadlod({"simplify", in, "-o", dir + "/out.ply", "--allow-partial", "-q"}).exitCode, 0);
+    const CliRun info = runCadlod({"info", in});  // shows what can be read, and says it is incomplete
+    EXPECT_EQ(info.exitCode, 0) << info.stderrText;
+    EXPECT_NE(info.stdoutText.find("incomplete   1 finding(s) lost geometry"), std::string::npos) << info.stdoutText;
 }
 
 // A face skipped for a bad index stays a warning: the model is converted, and the warning

@@ -80,6 +80,9 @@ TEST(CliUnits, KicadHeaderGivesTenthsOfAnInchUnlessUnitIsGiven)
     ASSERT_EQ(fallback.run.exitCode, 0) << fallback.run.stderrText;
     EXPECT_NEAR(fallback.report.at("modelSize").get<double>(), twoMillimetreBox, 1e-6);
     EXPECT_NE(runCadlod({"convert", "--help"}).stdoutText.find("KiCad"), std::string::npos);
+    const CliRun info = runCadlod({"info", part});
+    EXPECT_NE(info.stdoutText.find("units        0.1in (the KiCad StepUp header"), std::string::npos)
+        << info.stdoutText;
 }
 
 TEST(CliUnits, AnImplausibleSizeIsAWarningNamingTheUnitThatFixesIt)
