@@ -4,6 +4,7 @@
 #include "cli_options.h"
 #include "input_losses.h"
 #include "commands.h"
+#include "assembly_convert.h"
 #include "lod_output.h"
 #include "mesh_files.h"
 #include "output_file.h"
@@ -27,6 +28,7 @@ namespace {
 struct ConvertArgs {
     std::string input, output, report;
     std::string lod = "auto";
+    std::string instances = "keep";
     double pixelError = 1.0, fov = 45.0, viewport = 1080.0, distanceRatio = 2.0, cullPixels = 0.0,
            proxyPixels = 8.0;
     bool fromOriginal = false;
@@ -54,16 +56,6 @@ ViewParams viewOf(const ConvertArgs& a)
     v.pixelThreshold = a.pixelError;
     return v;
 }
-
-// The level meshes live here until the model is written.
-struct LevelStore {
-    std::deque<std::unique_ptr<CoreMesh>> meshes;
-    CoreMesh& add()
-    {
-        meshes.push_back(std::make_unique<CoreMesh>());
-        return *meshes.back();
-    }
-};
 
 LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& store)
 {
@@ -93,6 +85,7 @@ LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& s
 nlohmann::json optionsJson(const ConvertArgs& a, const LoadedMesh& loaded)
 {
     return {{"lod", a.lod},
+            {"instances", a.instances},
             {"pixelError", a.pixelError},
             {"fovY", a.fov},
             {"viewport", a.viewport},
@@ -157,6 +150,91 @@ void printSummary(const LodSetResult& r, const flt::WriteStats& written, const s
     printFindingsSummary(loaded);
 }
 
+void printAssemblySummary(const AssemblyConversion& c, const flt::InstancedWriteStats& written,
+                          const std::string& output)
+{
+    std::fprintf(stderr, "cadlod: %s: %zu placements of %zu distinct parts (%zu shared), %zu bytes\n", output.c_str(),
+                 written.placements, c.parts.size(), written.instanceDefinitions, written.bytes);
+    std::fprintf(stderr, "cadlod: level 0 draws %zu triangles; %zu distinct triangles written in all levels\n",
+                 c.model.placedTriangles(), written.triangles);
+    std::fprintf(stderr, "part                              placements  triangles  levels\n");
+    for (const PartChain& p : c.parts)
+        std::fprintf(stderr, "%-32.32s  %10zu  %9d  %6zu\n", p.name.c_str(), p.placements, p.triangles,
+                     p.result.levels.size());
+}
+
+nlohmann::json partsJson(const AssemblyConversion& c, const ViewParams& view)
+{
+    nlohmann::json parts = nlohmann::json::array();
+    for (const PartChain& p : c.parts)
+        parts.push_back({{"name", p.name}, {"placements", p.placements}, {"faces", p.triangles},
+                         {"modelSize", p.result.modelSize}, {"levels", levelsJson(p.result, view)},
+                         {"warnings", p.result.warnings}});
+    return parts;
+}
+
+nlohmann::json assemblyReportJson(const ConvertArgs& a, const AssemblyConversion& c,
+                                  const flt::InstancedWriteStats& written, const LoadedMesh& loaded,
+                                  double importSeconds, double lodSeconds, double writeSeconds, double totalSeconds)
+{
+    nlohmann::json input{{"path", a.input}, {"format", "VRML"}, {"parts", c.parts.size()},
+                         {"placements", written.placements}, {"faces", c.model.placedTriangles()}};
+    input.update(findingsJson(loaded));
+    return {
+        {"command", "convert"},
+        {"input", input},
+        {"output", {{"path", a.output}, {"bytes", written.bytes}, {"triangles", written.triangles},
+                    {"objects", written.objects}, {"lodNodes", written.lodNodes}, {"placements", written.placements},
+                    {"instanceDefinitions", written.instanceDefinitions},
+                    {"instanceReferences", written.instanceReferences},
+                    {"skippedDegenerateFaces", c.skippedFaces}}},
+        {"options", optionsJson(a, loaded)},
+        {"parts", partsJson(c, viewOf(a))},
+        {"warnings", warningLines(loaded)},
+        {"warningCount", warningCount(loaded)},
+        {"timings", {{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds}, {"writeSeconds", writeSeconds},
+                     {"totalSeconds", totalSeconds}}}};
+}
+
+// An assembly that shares geometry: each distinct part simplified once, placed by instances.
+void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSettings& importing,
+                      const SaveSettings& saving, Clock::time_point t0, OutputSet& outputs, const LoadedMesh& loaded)
+{
+    if (saving.flt.geometry != flt::GeometryRecords::Meshes)
+        throw UsageError(a.input + ": shared parts are written with Mesh records; use --records mesh, or "
+                                   "--instances expand for Face records");
+    const double importSeconds = secondsSince(t0);
+    const auto t1 = Clock::now();
+    AssemblyConversion c = convertAssembly(scene, baseName(a.output), importing,
+                                           [&](CoreMesh& original, LevelStore& store) {
+                                               return buildLevels(a, original, store);
+                                           });
+    c.model.units = saving.units;
+    const double lodSeconds = secondsSince(t1);
+    const auto t2 = Clock::now();
+    flt::WriteOptions writeOptions = saving.flt;
+    writeOptions.progress = [](int p) { progress::report(p, "Writing OpenFlight"); };
+    flt::InstancedWriteStats written;
+    std::vector<std::uint8_t> bytes;
+    std::string error;
+    if (!flt::writeInstancedOpenFlight(c.model, writeOptions, bytes, error, &written))
+        throw InputError(a.output + ": " + error);
+    outputs.write(a.output, [&](const std::string& temporary) { return writeBytesTo(temporary, bytes); });
+    const double writeSeconds = secondsSince(t2);
+    progress::finish();
+    if (!a.report.empty())
+        outputs.write(a.report, [&](const std::string& temporary) {
+            return writeJsonTo(temporary, assemblyReportJson(a, c, written, loaded, importSeconds, lodSeconds,
+                                                             writeSeconds, secondsSince(t0)));
+        });
+    outputs.commit();
+    if (!a.common.quiet) {
+        printAssemblySummary(c, written, a.output);
+        printFindingsSummary(loaded);
+    }
+}
+
+
 void runConvert(const ConvertArgs& a)
 {
     if (extensionOf(a.output) != "flt")
@@ -165,14 +243,20 @@ void runConvert(const ConvertArgs& a)
     outputs.add(a.output, "-o");
     if (!a.report.empty())
         outputs.add(a.report, "--report");
-    const ImportSettings importing = importSettings(a.import);
+    ImportSettings importing = importSettings(a.import);
+    importing.keepInstances = a.instances == "keep";
     const SaveSettings saving = saveSettings(a.exporting);
     progress::enable(!a.common.quiet);
     limitThreads(a.common.threads);
 
     const auto t0 = Clock::now();
     CoreMesh original;
-    const LoadedMesh loaded = loadMesh(a.input, original, importing);
+    vrml::Scene assembly;
+    const LoadedMesh loaded = loadMesh(a.input, original, importing, &assembly);
+    if (loaded.placements > 0) {
+        convertInstanced(a, assembly, importing, saving, t0, outputs, loaded);
+        return;
+    }
     const double importSeconds = secondsSince(t0);
 
     const auto t1 = Clock::now();
@@ -261,6 +345,11 @@ void addConvertCommand(CLI::App& app)
         ->capture_default_str();
     cmd->add_option("--cull-pixels", args->cullPixels, "auto: not drawn below this height (px); 0: never culled")
         ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
+    cmd->add_option("--instances", args->instances,
+                    "keep: a part the file places many times (USE, Inline) is simplified once and written as an "
+                    "OpenFlight instance; expand: a copy per placement")
+        ->check(CLI::IsMember({"keep", "expand"}))
         ->capture_default_str();
     cmd->add_flag("--from-original", args->fromOriginal, "List: simplify every level from the original");
     cmd->add_option("--samples", args->samples, "Hausdorff samples per side (0: automatic)");

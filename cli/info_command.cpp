@@ -9,6 +9,7 @@
 #include "measure/hausdorff.h"
 
 #include <cmath>
+#include <map>
 #include <cstdio>
 #include <memory>
 
@@ -36,13 +37,63 @@ void printFltLevels(const std::string& path)
     }
 }
 
+struct AssemblyCounts {
+    std::size_t distinct = 0, shared = 0, placements = 0, mirrored = 0, placedTriangles = 0, distinctTriangles = 0;
+    vcg::Box3d box;
+};
+
+AssemblyCounts countAssembly(const vrml::Scene& scene)
+{
+    AssemblyCounts c;
+    const std::vector<vrml::Placement> placements = vrml::flattenPlacements(scene.assembly, "");
+    std::map<std::size_t, std::size_t> uses;
+    for (const vrml::Placement& p : placements) {
+        const vrml::Geometry& g = scene.assembly.geometries[p.geometry];
+        ++uses[p.geometry];
+        c.mirrored += p.mirrored();
+        c.placedTriangles += g.triangleCount();
+        for (const vrml::Part& part : g.parts)
+            for (const auto& v : part.positions) {
+                const vrml::Vec3 w = p.matrix.transformPoint({v[0], v[1], v[2]});
+                c.box.Add(vcg::Point3d(w.x, w.y, w.z));
+            }
+    }
+    c.placements = placements.size();
+    c.distinct = uses.size();
+    for (const auto& [g, n] : uses) {
+        c.shared += n > 1;
+        c.distinctTriangles += scene.assembly.geometries[g].triangleCount();
+    }
+    return c;
+}
+
+// An assembly that shares parts: what is distinct, what is placed.
+void printAssembly(const std::string& path, const vrml::Scene& scene)
+{
+    const AssemblyCounts c = countAssembly(scene);
+    std::printf("file         %s\nformat       VRML, an assembly that shares parts\n", path.c_str());
+    std::printf("parts        %zu distinct, %zu of them placed more than once\n", c.distinct, c.shared);
+    std::printf("placements   %zu (%zu mirrored)\n", c.placements, c.mirrored);
+    std::printf("instances    %zu placements of shared parts\n", c.placements - (c.distinct - c.shared));
+    std::printf("triangles    %zu placed, %zu distinct\n", c.placedTriangles, c.distinctTriangles);
+    std::printf("bbox         (%.6g %.6g %.6g) .. (%.6g %.6g %.6g), diagonal %.6g\n", c.box.min[0], c.box.min[1],
+                c.box.min[2], c.box.max[0], c.box.max[1], c.box.max[2], c.box.Diag());
+    std::printf("units guess  %s\n", unitsGuess(c.box.Diag()));
+}
+
 void runInfo(const std::string& path)
 {
     progress::enable(false);
     CoreMesh m;
     ImportSettings settings;
     settings.allowPartial = true;  // shows what can be read; the losses are listed as warnings
-    const LoadedMesh loaded = loadMesh(path, m, settings);
+    settings.keepInstances = true;
+    vrml::Scene assembly;
+    const LoadedMesh loaded = loadMesh(path, m, settings, &assembly);
+    if (loaded.placements > 0) {
+        printAssembly(path, assembly);
+        return;
+    }
     const vcg::Box3d box = liveVertexBox(m);
     std::printf("file         %s\nformat       %s\nparts        %zu\ntriangles    %d\nvertices     %d\n", path.c_str(),
                 formatName(loaded.format), loaded.parts, m.fn, m.vn);

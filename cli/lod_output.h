@@ -5,10 +5,22 @@
 #include "mesh/core_mesh.h"
 #include "openflight/lod_model.h"
 
+#include <deque>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace cadlod::cli {
+
+// The level meshes of a chain live here until the model is written.
+struct LevelStore {
+    std::deque<std::unique_ptr<CoreMesh>> meshes;
+    CoreMesh& add()
+    {
+        meshes.push_back(std::make_unique<CoreMesh>());
+        return *meshes.back();
+    }
+};
 
 // Throws InputError when the set cannot be assembled.
 flt::LodModel lodMeshesToModel(const std::vector<CoreMesh*>& meshes, int setId, const std::string& name,

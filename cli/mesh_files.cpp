@@ -69,7 +69,15 @@ void prepareForSimplifier(CoreMesh& m)
     vcg::tri::UpdateTopology<CoreMesh>::VertexFace(m);
 }
 
-vrml::ImportOptions vrmlOptions(const ImportSettings& settings)
+int sceneToCoreMesh(vrml::Scene& scene, CoreMesh& m, const ImportSettings& settings)
+{
+    mesh_io::SceneToMeshOptions toMesh;
+    toMesh.mergeVertices = settings.mergeVertices;
+    toMesh.mergeTolerance = settings.mergeTolerance;
+    return mesh_io::sceneToMesh(scene, m, toMesh, progress::callback);
+}
+
+vrml::ImportOptions vrmlOptions(const ImportSettings& settings, bool keepInstances)
 {
     vrml::ImportOptions options;
     options.unitScale = settings.unitScale;
@@ -77,13 +85,16 @@ vrml::ImportOptions vrmlOptions(const ImportSettings& settings)
     options.kicadUnitScale = 0.001;                    // KiCad's millimetres to metres
     options.upAxis = settings.yUpToZUp ? vrml::UpAxis::YUpToZUp : vrml::UpAxis::Keep;
     options.recomputeNormals = settings.recomputeNormals;
+    if (keepInstances)
+        options.instances = vrml::Instances::Keep;
     options.progress = [](double f) { progress::report(int(60 * f), "Reading VRML"); };
     return options;
 }
 
-LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& settings)
+LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& settings, vrml::Scene* assembly)
 {
-    vrml::ImportResult imported = vrml::importVrmlFile(path, vrmlOptions(settings));
+    vrml::ImportResult imported =
+        vrml::importVrmlFile(path, vrmlOptions(settings, settings.keepInstances && assembly));
     if (!imported.ok())
         throw InputError(imported.error);
     refuseLosses(imported.scene.diagnostics, settings.allowPartial);
@@ -92,15 +103,18 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
         std::fprintf(stderr, "cadlod: warning: %s\n", findingLine(kept[i]).c_str());
     LoadedMesh info;
     info.format = InputFormat::Vrml;
-    info.parts = imported.scene.parts.size();
     info.findings = imported.scene.diagnostics;
     info.kicadHeader = imported.assumed.kicadHeader;
     info.kicadUnitApplied = imported.assumed.kicadUnits;
     info.unit = chooseUnit(settings.unit, info.kicadUnitApplied, settings.defaultUnit, settings.defaultUnitGiven);
-    mesh_io::SceneToMeshOptions toMesh;
-    toMesh.mergeVertices = settings.mergeVertices;
-    toMesh.mergeTolerance = settings.mergeTolerance;
-    info.mergedVertices = mesh_io::sceneToMesh(imported.scene, m, toMesh, progress::callback);
+    if (!imported.scene.assembly.empty()) {
+        info.parts = imported.scene.assembly.geometries.size();
+        info.placements = imported.scene.assembly.placementCount();
+        *assembly = std::move(imported.scene);
+        return info;
+    }
+    info.parts = imported.scene.parts.size();
+    info.mergedVertices = sceneToCoreMesh(imported.scene, m, settings);
     if (m.fn == 0)
         throw InputError(path + ": no triangles in the scene");
     return info;
@@ -215,11 +229,15 @@ flt::LodModel readFlt(const std::string& path)
     return model;
 }
 
-LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& settings)
+LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& settings, vrml::Scene* assembly)
 {
     LoadedMesh info;
     switch (formatOf(path)) {
-    case InputFormat::Vrml: info = loadVrml(path, m, settings); break;
+    case InputFormat::Vrml:
+        info = loadVrml(path, m, settings, assembly);
+        if (info.placements > 0)
+            return info;
+        break;
     case InputFormat::OpenFlight: info = loadFlt(path, m, settings); break;
     case InputFormat::Ply: info = loadWithVcg<vcg::tri::io::ImporterPLY<CoreMesh>>(
         path, m, InputFormat::Ply, [](int rc) { return vcg::tri::io::ImporterPLY<CoreMesh>::ErrorCritical(rc); }); break;
@@ -235,6 +253,19 @@ LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& 
     if (info.format == InputFormat::Vrml)
         checkModelSize(m, info);
     return info;
+}
+
+void partToMesh(std::vector<vrml::Part>&& parts, const std::string& name, CoreMesh& m, const ImportSettings& settings,
+                LoadedMesh& info)
+{
+    vrml::Scene scene;
+    scene.parts = std::move(parts);
+    info.format = InputFormat::Vrml;
+    info.parts = scene.parts.size();
+    info.mergedVertices = sceneToCoreMesh(scene, m, settings);
+    if (m.fn == 0)
+        throw InputError(name + ": no triangles in the part");
+    prepareForSimplifier(m);
 }
 
 void saveMesh(const std::string& path, CoreMesh& m, const SaveSettings& settings)

@@ -7,6 +7,7 @@
 #include "openflight/lod_model.h"
 #include "unit_choice.h"
 #include "vrml/diagnostics.h"
+#include "vrml/scene.h"
 
 #include <string>
 #include <vector>
@@ -28,6 +29,7 @@ struct ImportSettings {
     bool recomputeNormals = false;
     bool mergeVertices = true;
     float mergeTolerance = 0.0f;
+    bool keepInstances = false;  // VRML: an assembly that shares geometry is kept as placements
 };
 
 struct LoadedMesh {
@@ -36,6 +38,7 @@ struct LoadedMesh {
     int mergedVertices = 0;
     std::size_t fltLevels = 0;       // OpenFlight: levels in the file
     flt::Units fltUnits = flt::Units::Meters;
+    std::size_t placements = 0;      // kept instances: placements of the distinct parts
     // VRML: the unit applied and why, KiCad's header, the importer's findings, and the
     // command's own warnings about the model (an implausible size for its unit).
     UnitChoice unit{"file units", 1.0, "--unit applies to VRML inputs only"};
@@ -47,7 +50,15 @@ struct LoadedMesh {
 // Loads `path` into `m` (empty) ready for the simplifier (compact, VF adjacency, face
 // normals, bbox); throws InputError with the reader's message (file:line:col or offset),
 // also for a VRML input that lost geometry unless settings.allowPartial.
-LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& settings);
+// With settings.keepInstances and `assembly`, a VRML file that shares geometry goes to
+// `assembly` (its parts not welded yet) and `m` stays empty.
+LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& settings,
+                    vrml::Scene* assembly = nullptr);
+
+// A distinct part of an assembly as the simplifier takes it: welded as loadMesh welds.
+// Throws InputError when nothing is left of it.
+void partToMesh(std::vector<vrml::Part>&& parts, const std::string& name, CoreMesh& m, const ImportSettings& settings,
+                LoadedMesh& info);
 
 // Reads an OpenFlight file whole; throws InputError.
 flt::LodModel readFlt(const std::string& path);

@@ -13,6 +13,9 @@ struct State {
     bool barOpen = false;
     std::string lastText;
     int lastTenth = -1;
+    bool inSpan = false;
+    int spanFrom = 0, spanTo = 100;
+    std::string spanLabel;
 };
 
 State& state()
@@ -51,11 +54,26 @@ void report(int percent, const std::string& text)
     if (!s.enabled)
         return;
     percent = std::clamp(percent, 0, 100);
+    if (s.inSpan)
+        percent = s.spanFrom + (s.spanTo - s.spanFrom) * percent / 100;
+    const std::string& shown = s.inSpan ? s.spanLabel : text;
     if (s.terminal)
-        drawBar(s, percent, text);
+        drawBar(s, percent, shown);
     else
-        printLine(s, percent, text);
+        printLine(s, percent, shown);
 }
+
+void beginSpan(int from, int to, const std::string& label)
+{
+    State& s = state();
+    s.spanFrom = std::clamp(from, 0, 100);
+    s.spanTo = std::clamp(to, s.spanFrom, 100);
+    s.spanLabel = label;
+    s.inSpan = true;
+    report(0, label);
+}
+
+void endSpan() { state().inSpan = false; }
 
 void finish()
 {

@@ -106,6 +106,12 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     report(plugin, GLLogStream::FILTER, std::string(line));
     report(plugin, GLLogStream::FILTER, "VRML import of " + fileName.toStdString() + ": " +
                                             result.assumed.describe(options.unitScale));
+    if (scene.stats.expandedCopies > 0)
+        report(plugin, GLLogStream::WARNING,
+               "VRML import of " + fileName.toStdString() + ": the file places shared parts (USE, Inline) " +
+                   std::to_string(scene.stats.expandedCopies) +
+                   " more times; a MeshLab layer is one mesh, so each is a copy here. `cadlod convert` keeps them "
+                   "as OpenFlight instances, each part simplified once.");
     logDiagnostics(plugin, scene.diagnostics);
     if (cb) cb(100, "VRML import done");
     return true;

@@ -35,8 +35,10 @@ echo "== summary"
 echo "  report: $OUT/report.json"
 echo
 echo "== OpenSceneGraph reads $FLT (switch ranges in meters)"
+"$BUILD/tests/openflight/osg_assembly_stats" "$FLT" "$name" | sed 's/^/  /'
 "$BUILD/tests/openflight/osg_flt_probe" "$FLT" > "$OUT/osg_probe.txt"
-grep -E "^lod " "$OUT/osg_probe.txt" | sed 's/^/  /'
+echo "  the first LOD nodes:"
+grep -E "^lod " "$OUT/osg_probe.txt" | head -8 | sed 's/^/    /'
 echo "  $(grep -c '^name ' "$OUT/osg_probe.txt") named nodes; parts: $(grep '^name ' "$OUT/osg_probe.txt" | sed 's/^name //' | grep -v -e '^lod[0-9]' -e 'LOD child' | sort -u | tr '\n' ' ')"
 printf '\ninput  %s (%s bytes)\noutput %s (%s bytes)\ntime   %d ms (load, LOD chain, export)\n' \
   "$INPUT" "$(stat -c %s "$INPUT")" "$FLT" "$(stat -c %s "$FLT")" "$millis"

@@ -8,7 +8,9 @@
 # demo, the bench assembly/board and three corpus VRML parts, instead of everything.
 # Inputs are copied from this checkout into OUT_DIR/inputs and every command runs in OUT_DIR
 # with relative paths, so two builds see the same files under the same names (the reports
-# carry the paths). Compare two OUT_DIRs with bench/identity/compare.sh.
+# carry the paths). Compare two OUT_DIRs with bench/identity/compare.sh. CADLOD_CONVERT_ARGS
+# adds options to every `cadlod convert` (e.g. "--instances expand" to compare a build that
+# keeps instances with one from before them).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 quick=0 bench=1
@@ -39,14 +41,15 @@ cadlod="$build/cli/cadlod"
 step() { printf '== %-8s %s\n' "$1" "$(date -u +%T)"; }
 exec 3>&1  # the timings go here, past the commands' redirections to their logs
 timed() { local t0=$SECONDS; "$@"; echo "   $(( SECONDS - t0 )) s" >&3; }
+read -r -a convert_args <<< "${CADLOD_CONVERT_ARGS:-}"
 
 step convert
 # The demo as scripts/demo.sh runs it, then convert --report on three inputs.
-timed env -u DISPLAY "$cadlod" convert inputs/cad_assembly.wrl.gz -o demo.flt --unit mm --report demo.json -q --force > demo.log 2>&1
-timed env -u DISPLAY "$cadlod" convert inputs/cad_assembly.wrl.gz -o paper.flt --unit mm --lod "50 60 70 80 90" \
+timed env -u DISPLAY "$cadlod" convert "${convert_args[@]}" inputs/cad_assembly.wrl.gz -o demo.flt --unit mm --report demo.json -q --force > demo.log 2>&1
+timed env -u DISPLAY "$cadlod" convert "${convert_args[@]}" inputs/cad_assembly.wrl.gz -o paper.flt --unit mm --lod "50 60 70 80 90" \
   --report paper.json -q --force > paper.log 2>&1
-timed env -u DISPLAY "$cadlod" convert inputs/shaft.wrl -o shaft.flt --report shaft.json -q --force > shaft.log 2>&1
-timed env -u DISPLAY "$cadlod" convert inputs/relay_fujitsu.wrl -o relay.flt --unit mm --report relay.json -q --force \
+timed env -u DISPLAY "$cadlod" convert "${convert_args[@]}" inputs/shaft.wrl -o shaft.flt --report shaft.json -q --force > shaft.log 2>&1
+timed env -u DISPLAY "$cadlod" convert "${convert_args[@]}" inputs/relay_fujitsu.wrl -o relay.flt --unit mm --report relay.json -q --force \
   > relay.log 2>&1
 
 step mlx

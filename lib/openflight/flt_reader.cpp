@@ -30,11 +30,28 @@ struct PoolVertex {
 
 enum class Node { None, Group, Lod, Object, Face, Mesh, Other };
 
+Mat4d identityMatrix() { return {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}; }
+
+Mat4d multiply(const Mat4d& a, const Mat4d& b)
+{
+    Mat4d out{};
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            for (int k = 0; k < 4; ++k)
+                out[r][c] += a[r][k] * b[k][c];
+    return out;
+}
+
+bool isIdentity(const Mat4d& m) { return m == identityMatrix(); }
+
+
 // What a Push opens: the primary record just before it, and where its geometry goes.
 struct Frame {
     Node kind = Node::None;
     int level = -1;
     int part = -1;
+    Mat4d toModel = identityMatrix();  // this frame's coordinates -> the model's
+    int lodChildren = 0;               // LOD records met directly below: their ranks
     Rgba color{1, 1, 1, 1};
     std::vector<std::uint32_t> faceOffsets;  // Face: vertex palette offsets
     std::vector<PoolVertex> pool;            // Mesh: local vertex pool
@@ -47,6 +64,13 @@ struct LastPrimary {
     int part = -1;
     bool rootGroup = false;
     Rgba color{1, 1, 1, 1};
+    bool hasMatrix = false;
+    Mat4d matrix = identityMatrix();  // an ancillary Matrix record after it
+};
+
+// An Instance Definition's records, replayed at each Instance Reference.
+struct RecordRange {
+    std::size_t begin = 0, end = 0;
 };
 
 std::string hex32(std::uint32_t v)
@@ -55,6 +79,9 @@ std::string hex32(std::uint32_t v)
     std::snprintf(text, sizeof text, "0x%08x", unsigned(v));
     return text;
 }
+
+// Instances inside instances deeper than this are refused (a hostile file could nest many).
+constexpr int kMaxInstanceNesting = 32;
 
 class Reader {
 public:
@@ -68,36 +95,8 @@ public:
 
     bool run(std::string& error)
     {
-        std::size_t pos = 0, nextProgress = 0;
-        while (pos < size_) {
-            std::uint16_t op = 0;
-            std::size_t next = 0;
-            std::vector<std::uint8_t> body;
-            std::size_t continuations = 0;
-            const bool read = records_.next(pos, op, body, next, continuations, error);
-            stats_.records += continuations;
-            if (!read)
-                return false;
-            if (pos == 0 && op != opcode::Header) {
-                error = "not an OpenFlight file: the first record (offset 0) has " + opcodeText(op) +
-                        ", expected a Header (1)";
-                return false;
-            }
-            try {
-                if (!handle(op, body, pos, error))
-                    return false;
-            } catch (const ShortRecord& e) {
-                error = "record at offset " + std::to_string(pos) + " (" + opcodeText(op) + ") is too short: " +
-                        e.what();
-                return false;
-            }
-            ++stats_.records;
-            pos = next;
-            if (options_.progress && pos >= nextProgress) {
-                options_.progress(int(100.0 * double(pos) / double(size_)));
-                nextProgress = pos + (1u << 20);
-            }
-        }
+        if (!readRange(0, size_, error))
+            return false;
         if (size_ == 0) {
             error = "empty file: no OpenFlight Header record";
             return false;
@@ -112,12 +111,126 @@ public:
                     " Push record(s) without a Pop at the end of the file (offset " + std::to_string(size_) + ")";
             return false;
         }
+        if (definition_.open) {
+            error = "Instance Definition " + std::to_string(definition_.number) + " at offset " +
+                    std::to_string(definition_.at) + " is not closed by the end of the file";
+            return false;
+        }
+        mergeOutsideLodsIntoFinest();
         dropEmptyParts();
         return true;
     }
 
 private:
-    bool handle(std::uint16_t op, const std::vector<std::uint8_t>& body, std::size_t pos, std::string& error)
+    // The records in [begin, end): the whole file, or an Instance Definition replayed.
+    bool readRange(std::size_t begin, std::size_t end, std::string& error)
+    {
+        std::size_t pos = begin, nextProgress = begin;
+        while (pos < end) {
+            std::uint16_t op = 0;
+            std::size_t next = 0;
+            std::vector<std::uint8_t> body;
+            std::size_t continuations = 0;
+            const bool read = records_.next(pos, op, body, next, continuations, error);
+            stats_.records += continuations;
+            if (!read)
+                return false;
+            if (pos == 0 && op != opcode::Header) {
+                error = "not an OpenFlight file: the first record (offset 0) has " + opcodeText(op) +
+                        ", expected a Header (1)";
+                return false;
+            }
+            if (!defineOrHandle(op, body, pos, next, error))
+                return false;
+            ++stats_.records;
+            pos = next;
+            if (options_.progress && replayDepth_ == 0 && pos >= nextProgress) {
+                options_.progress(int(100.0 * double(pos) / double(size_)));
+                nextProgress = pos + (1u << 20);
+            }
+        }
+        return true;
+    }
+
+    bool defineOrHandle(std::uint16_t op, const std::vector<std::uint8_t>& body, std::size_t pos, std::size_t next,
+                        std::string& error)
+    {
+        if (definition_.open && keepInDefinition(op, pos, next))
+            return true;
+        try {
+            return handle(op, body, pos, next, error);
+        } catch (const ShortRecord& e) {
+            error = "record at offset " + std::to_string(pos) + " (" + opcodeText(op) + ") is too short: " + e.what();
+            return false;
+        }
+    }
+
+    // An Instance Definition's records are kept to be read at each reference: its ancillary
+    // records (a Matrix), then its Push ... Pop.
+    // False for the record after a definition that has no Push: it is read as usual.
+    bool keepInDefinition(std::uint16_t op, std::size_t pos, std::size_t next)
+    {
+        const bool primary = op != opcode::Push && op != opcode::Pop && op != opcode::LongId && op != opcode::Matrix &&
+                             op != opcode::Continuation;
+        if (definition_.depth == 0 && primary) {
+            definitions_[definition_.number] = {definition_.begin, pos};
+            definition_.open = false;
+            return false;
+        }
+        if (op == opcode::Push)
+            ++definition_.depth;
+        else if (op == opcode::Pop && --definition_.depth == 0) {
+            definitions_[definition_.number] = {definition_.begin, next};
+            definition_.open = false;
+        }
+        return true;
+    }
+
+    void beginDefinition(ByteReader& in, std::size_t pos, std::size_t next)
+    {
+        in.skip(2);
+        definition_ = OpenDefinition{true, int(in.u16()), 0, next, pos};
+        ++stats_.instanceDefinitions;
+    }
+
+    bool readReference(ByteReader& in, std::size_t pos, std::string& error)
+    {
+        in.skip(2);
+        const int number = in.u16();
+        const auto it = definitions_.find(number);
+        if (it == definitions_.end()) {
+            error = "Instance Reference at offset " + std::to_string(pos) + " refers to definition " +
+                    std::to_string(number) + ", which no Instance Definition before it defines";
+            return false;
+        }
+        if (replayDepth_ >= kMaxInstanceNesting) {
+            error = "Instance Reference at offset " + std::to_string(pos) + ": instances nested deeper than " +
+                    std::to_string(kMaxInstanceNesting);
+            return false;
+        }
+        ++stats_.instanceReferences;
+        last_ = LastPrimary{Node::Other, stack_.back().level, stack_.back().part};
+        ++replayDepth_;
+        const bool ok = readRange(it->second.begin, it->second.end, error);
+        --replayDepth_;
+        last_ = LastPrimary{Node::Other, stack_.back().level, stack_.back().part};
+        return ok;
+    }
+
+    // Ancillary to the record before it; OpenFlight's row-vector matrix, turned to columns.
+    void readMatrix(ByteReader& in)
+    {
+        Mat4d m{};
+        for (int row = 0; row < 4; ++row)
+            for (int col = 0; col < 4; ++col)
+                m[col][row] = in.f32();
+        last_.hasMatrix = true;
+        last_.matrix = m;
+    }
+
+private:
+    bool handle(std::uint16_t op, const std::vector<std::uint8_t>& body, std::size_t pos, std::size_t next,
+                std::string& error)
     {
         ByteReader in(body.data(), body.size());
         switch (op) {
@@ -131,6 +244,9 @@ private:
         case opcode::Push: push(); sawPush_ = true; return true;
         case opcode::Pop: return pop(pos, error);
         case opcode::Group: readGroup(); return true;
+        case opcode::Matrix: readMatrix(in); return true;
+        case opcode::InstanceDefinition: beginDefinition(in, pos, next); return true;
+        case opcode::InstanceReference: return readReference(in, pos, error);
         case opcode::Lod: readLod(in); return true;
         case opcode::Object: readObject(in); return true;
         case opcode::LongId: readLongId(in); return true;
@@ -213,6 +329,7 @@ private:
         f.level = last_.kind == Node::Lod ? last_.level : outer.level;
         f.part = last_.kind == Node::Object ? last_.part : last_.kind == Node::Lod ? -1 : outer.part;
         f.color = last_.color;
+        f.toModel = last_.hasMatrix ? multiply(outer.toModel, last_.matrix) : outer.toModel;
         if (last_.kind == Node::Mesh) {
             f.pool = std::move(pendingPool_);
             f.poolToPart.assign(f.pool.size(), -1);
@@ -243,6 +360,8 @@ private:
         sawGroup_ = true;
     }
 
+    // Sibling LOD records are the levels of one node: the k-th of each node (each part of an
+    // assembly, each placement of an instance) goes to level k.
     void readLod(ByteReader& in)
     {
         Level level;
@@ -253,8 +372,26 @@ private:
         in.skip(8);
         for (double& x : level.center)
             x = in.f64();
-        model_.levels.push_back(std::move(level));
-        last_ = LastPrimary{Node::Lod, int(model_.levels.size()) - 1, -1};
+        const std::size_t rank = std::size_t(stack_.back().lodChildren++);
+        if (rank >= levelOfRank_.size()) {
+            model_.levels.push_back(std::move(level));
+            levelOfRank_.push_back(int(model_.levels.size()) - 1);
+        } else {
+            severalLodNodes_ = true;
+        }
+        last_ = LastPrimary{Node::Lod, levelOfRank_[rank], -1};
+    }
+
+    // In a file of several LOD nodes, what no LOD holds is drawn at every distance: it
+    // belongs with the finest level.
+    void mergeOutsideLodsIntoFinest()
+    {
+        if (!severalLodNodes_ || defaultLevel_ < 0 || levelOfRank_.empty())
+            return;
+        auto& outside = model_.levels[std::size_t(defaultLevel_)].parts;
+        auto& finest = model_.levels[std::size_t(levelOfRank_[0])].parts;
+        finest.insert(finest.end(), std::make_move_iterator(outside.begin()), std::make_move_iterator(outside.end()));
+        model_.levels.erase(model_.levels.begin() + defaultLevel_);
     }
 
     int currentLevel()
@@ -368,15 +505,22 @@ private:
         Part& p = partOf(level, part);
         auto& index = faceVertexIndex_[{level, part}];
         std::vector<std::uint32_t> corners;
+        const bool moved = !isIdentity(f.toModel);
         for (std::uint32_t offset : f.faceOffsets) {
             const auto v = paletteVertices_.find(offset);
             if (v == paletteVertices_.end() || !isFinite(v->second.position))
                 continue;
+            if (moved) {  // a palette vertex stands elsewhere in each placement
+                corners.push_back(std::uint32_t(p.positions.size()));
+                appendVertex(p, v->second, f.toModel);
+                continue;
+            }
             const auto [it, added] = index.emplace(offset, std::uint32_t(p.positions.size()));
             if (added)
                 appendVertex(p, v->second);
             corners.push_back(it->second);
         }
+
         if (corners.size() < 3) {
             ++stats_.skippedFaces;
             return;
@@ -392,6 +536,30 @@ private:
     static bool isFinite(const Vec3d& position)
     {
         return std::isfinite(position[0]) && std::isfinite(position[1]) && std::isfinite(position[2]);
+    }
+
+    static Vec3d transformed(const Mat4d& m, const Vec3d& p, double w)
+    {
+        Vec3d out{};
+        for (int r = 0; r < 3; ++r)
+            out[r] = m[r][0] * p[0] + m[r][1] * p[1] + m[r][2] * p[2] + m[r][3] * w;
+        return out;
+    }
+
+    // A vertex in the model's coordinates: moved by the frame's matrices (instances, groups).
+    void appendVertex(Part& p, const PoolVertex& v, const Mat4d& toModel)
+    {
+        if (isIdentity(toModel)) {
+            appendVertex(p, v);
+            return;
+        }
+        PoolVertex moved = v;
+        moved.position = transformed(toModel, v.position, 1.0);
+        const Vec3d n = transformed(toModel, {v.normal[0], v.normal[1], v.normal[2]}, 0.0);
+        const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (length > 0)
+            moved.normal = {float(n[0] / length), float(n[1] / length), float(n[2] / length)};
+        appendVertex(p, moved);
     }
 
     void appendVertex(Part& p, const PoolVertex& v)
@@ -506,7 +674,7 @@ private:
                 std::int64_t& target = f.poolToPart[t[c]];
                 if (target < 0) {
                     target = std::int64_t(p.positions.size());
-                    appendVertex(p, f.pool[t[c]]);
+                    appendVertex(p, f.pool[t[c]], f.toModel);
                 }
                 mapped[c] = std::uint32_t(target);
             }
@@ -514,6 +682,7 @@ private:
                 ++stats_.skippedFaces;
                 continue;
             }
+
             p.triangles.push_back(mapped);
             p.triangleColors.push_back(f.color);
             ++valid;
@@ -557,6 +726,16 @@ private:
     std::vector<PoolVertex> pendingPool_;
     std::map<std::pair<int, int>, std::unordered_map<std::uint32_t, std::uint32_t>> faceVertexIndex_;
     std::set<std::pair<int, int>> coloredParts_;
+    std::vector<int> levelOfRank_;
+    bool severalLodNodes_ = false;
+    struct OpenDefinition {
+        bool open = false;
+        int number = 0;
+        int depth = 0;
+        std::size_t begin = 0, at = 0;
+    } definition_;
+    std::map<int, RecordRange> definitions_;
+    int replayDepth_ = 0;
 };
 
 }  // namespace

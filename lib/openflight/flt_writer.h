@@ -38,6 +38,7 @@ struct WriteStats {
 // Checks the model (indices in range, attribute arrays sized like the positions, a level
 // at least); false with `error` saying which level/part/triangle is wrong.
 bool validateModel(const LodModel& model, std::string& error);
+bool validateLevels(const std::vector<Level>& levels, std::string& error);
 
 bool writeOpenFlight(const LodModel& model, const WriteOptions& options, std::vector<std::uint8_t>& out,
                      std::string& error, WriteStats* stats = nullptr);

@@ -182,6 +182,28 @@ void writeLod(ByteWriter& w, const std::string& name, double switchIn, double sw
     w.f64(0);  // significant size
 }
 
+void writeMatrix(ByteWriter& w, const Mat4d& columns)
+{
+    recordHeader(w, opcode::Matrix, size::Matrix);
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col)
+            w.f32(static_cast<float>(columns[col][row]));
+}
+
+void writeInstanceDefinition(ByteWriter& w, int number)
+{
+    recordHeader(w, opcode::InstanceDefinition, size::Instance);
+    w.u16(0);
+    w.u16(static_cast<std::uint16_t>(number));
+}
+
+void writeInstanceReference(ByteWriter& w, int number)
+{
+    recordHeader(w, opcode::InstanceReference, size::Instance);
+    w.u16(0);
+    w.u16(static_cast<std::uint16_t>(number));
+}
+
 void writeObject(ByteWriter& w, const std::string& name)
 {
     recordHeader(w, opcode::Object, size::Object);

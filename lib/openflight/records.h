@@ -14,7 +14,7 @@ namespace cadlod::flt {
 namespace opcode {
 constexpr std::uint16_t Header = 1, Group = 2, Object = 4, Face = 5, Push = 10, Pop = 11,
                         Continuation = 23, ColorPalette = 32, LongId = 33, VertexPalette = 67,
-                        VertexColor = 68, VertexNormal = 69, VertexNormalUv = 70,
+                        VertexColor = 68, Matrix = 49, InstanceReference = 61, InstanceDefinition = 62, VertexNormal = 69, VertexNormalUv = 70,
                         VertexColorUv = 71, VertexList = 72, Lod = 73, Mesh = 84,
                         LocalVertexPool = 85, MeshPrimitive = 86, Material = 113;
 }
@@ -33,7 +33,8 @@ inline bool isPrimaryRecord(std::uint16_t op)
 }
 
 namespace size {
-constexpr std::size_t Header = 324, ColorPalette = 4228, Material = 84, Group = 44, Object = 28,
+constexpr std::size_t Header = 324, ColorPalette = 4228, Material = 84, Group = 44, Object = 28, Matrix = 68,
+                      Instance = 8,
                       Lod = 80, Face = 80, Mesh = 84, VertexPalette = 8, VertexColor = 40,
                       VertexNormal = 56, VertexNormalUv = 64, VertexColorUv = 48;
 // The largest record length that is a multiple of 4.
@@ -93,6 +94,13 @@ std::size_t vertexRecordSize(bool hasNormal, bool hasUv);
 void writeGroup(ByteWriter& w, const std::string& name);
 void writeLod(ByteWriter& w, const std::string& name, double switchIn, double switchOut, const Vec3d& center);
 void writeObject(ByteWriter& w, const std::string& name);
+// Ancillary to the record before it. `columns` maps column vectors (p' = M p); OpenFlight
+// stores the transpose, for row vectors, in float32.
+void writeMatrix(ByteWriter& w, const Mat4d& columns);
+// Instance numbers are 16-bit; some readers take them as signed.
+constexpr int kMaxInstanceNumber = 32767;
+void writeInstanceDefinition(ByteWriter& w, int number);
+void writeInstanceReference(ByteWriter& w, int number);
 void writeFace(ByteWriter& w, const Appearance& a);
 void writeMesh(ByteWriter& w, const Appearance& a);
 // Offsets from the start of the Vertex Palette record; split over as many records as needed.

@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <tuple>
 
@@ -35,7 +36,18 @@ inline std::string instanceName(const Node& node, const Owner& outer)
     return node.defName;
 }
 
+// With instances kept: the geometry whose shapes are being read, and the DEF names of its
+// unshared nodes on the way down, which name the placements met there.
+struct GeometryScope {
+    std::size_t geometry = 0;
+    std::vector<std::string> names;
+    std::map<std::tuple<int, float, float, float, float, std::string>, size_t> partIndex;
+    Owner shapes;  // the owner of its shapes that have no DEF'd node of their own above them
+};
+
 struct EvalContext {
+    EvalContext(Scene& scene, const ImportOptions& options) : scene(scene), options(options) {}
+
     Scene& scene;
     const ImportOptions& options;
     EmitOptions emit;
@@ -46,6 +58,22 @@ struct EvalContext {
 
     Owner newOwner(const std::string& name) { return {nextOwnerId++, name}; }
     Part& part(const Owner& owner, const std::array<float, 4>& color, const std::string& texture = {});
+    // Whose part a shape's faces go to: `owner` (the nearest DEF'd node above it), else the shape
+    // itself, named by `path`. In a shared geometry, such shapes are the faces of one part, named
+    // after the geometry: its placements are what a user picks.
+    Owner shapeOwner(const Owner& owner, const std::string& path);
+
+    bool keepsInstances() const { return keepInstances; }
+    // With instances kept: `key` (a shared node, an Inline file) placed at `world`. The first
+    // time a key is met, `evaluate` reads its geometry, with its shapes going to a geometry of
+    // its own, evaluated in `frame`. A key met again inside itself is refused.
+    void placeInstance(const std::string& key, const std::string& name, const Mat4& world, const std::string& where,
+                       const std::function<void()>& evaluate);
+    // Expanding: counts a use of the shared node `key` after its first (SceneStats::expandedCopies).
+    void noteExpandedUse(const std::string& key);
+    // Around an unshared DEF'd node, with instances kept: its name goes into the placements'.
+    void enterNamed(const Node& node);
+    void leaveNamed(const Node& node);
     // The first texture url that exists relative to baseDir; "" (and a warning) if none.
     std::string resolveTexture(const std::vector<std::string>& urls, const std::string& where);
 
@@ -57,6 +85,12 @@ struct EvalContext {
 
     int nextOwnerId = 0;
     std::map<std::tuple<int, float, float, float, float, std::string>, size_t> partIndex;
+    bool keepInstances = false;
+    Mat4 frame, frameInverse;            // output units <-> file units, uniform
+    std::vector<GeometryScope> scopes;   // with instances kept: back() is being read
+    std::map<std::string, std::size_t> geometryOfKey;
+    std::vector<bool> reading;           // per geometry: being read now
+    std::set<std::string> expandedKeys;  // expanding: the shared nodes met so far
     InstancingBudget budget;
     std::string error;  // fatal: the scene would exceed the triangle limit
 };

@@ -6,6 +6,7 @@
 #include "vrml/transform.h"
 #include "vrml/traversal.h"
 
+#include <cstdio>
 #include <set>
 
 namespace cadlod::vrml {
@@ -79,6 +80,43 @@ public:
             ctx_.scene.diagnostics.warn("too deep", node->where, "scene nesting too deep; subtree skipped");
             return;
         }
+        if (node->useCount > 0 && node->type == "Separator") {
+            if (ctx_.keepsInstances()) {
+                place(node, state, depth);
+                return;
+            }
+            ctx_.noteExpandedUse(instanceKey(*node, state));
+        }
+        ctx_.enterNamed(*node);
+        evaluate(node, state, owner, path, depth);
+        ctx_.leaveNamed(*node);
+    }
+
+private:
+    // A USE'd Separator is one geometry per traversal state it is met in: what it draws depends
+    // on the coordinates, materials and hints in force; its transform goes to the placement.
+    static std::string instanceKey(const Node& node, const State& state)
+    {
+        char key[200];
+        std::snprintf(key, sizeof key, "node %p %p %p %p %p %p %s %s %d %d %g", static_cast<const void*>(&node),
+                      static_cast<const void*>(state.coords), static_cast<const void*>(state.normals),
+                      static_cast<const void*>(state.texCoords), static_cast<const void*>(state.diffuse),
+                      static_cast<const void*>(state.transparency), state.normalBinding.c_str(),
+                      state.materialBinding.c_str(), int(state.ccw), int(state.convex), double(state.creaseAngle));
+        return key + std::string(" ") + state.texture;
+    }
+
+    void place(const NodePtr& node, const State& state, int depth)
+    {
+        ctx_.placeInstance(instanceKey(*node, state), node->defName, state.world, node->where, [&] {
+            State local = state;
+            local.world = ctx_.frame;
+            evaluate(node, local, Owner{}, node->defName, depth);
+        });
+    }
+
+    void evaluate(const NodePtr& node, State& state, const Owner& owner, const std::string& path, int depth)
+    {
         const Owner here = node->defName.empty() ? owner : ctx_.newOwner(instanceName(*node, owner));
         const std::string& t = node->type;
         const std::string at = path + "/" + t;
@@ -187,7 +225,7 @@ private:
         if (!ctx_.admit(node, true)) return true;
         ++ctx_.scene.stats.shapes;
         const std::vector<float> materials = materialsRgba(s);
-        Part& part = ctx_.part(owner.id < 0 ? ctx_.newOwner(path) : owner, firstMaterial(materials), s.texture);
+        Part& part = ctx_.part(ctx_.shapeOwner(owner, path), firstMaterial(materials), s.texture);
         const size_t before = part.triangleCount();
         emitShape(n, s, materials, part);
         countShapeTriangles(t, before, part, ctx_.scene.stats);

@@ -5,6 +5,7 @@
 #include "vrml/transform.h"
 #include "vrml/traversal.h"
 
+#include <cstdio>
 #include <set>
 
 namespace cadlod::vrml {
@@ -67,6 +68,38 @@ public:
             ctx_.scene.diagnostics.warn("too deep", node->where, "scene nesting too deep; subtree skipped");
             return;
         }
+        if (isInstance(*node)) {
+            if (!ctx_.keepsInstances()) {
+                ctx_.noteExpandedUse(instanceKey(*node));
+            } else {
+                ctx_.placeInstance(instanceKey(*node), node->defName, world, node->where,
+                                   [&] { evaluate(node, ctx_.frame, Owner{}, node->defName, depth); });
+                return;
+            }
+        }
+        ctx_.enterNamed(*node);
+        evaluate(node, world, owner, path, depth);
+        ctx_.leaveNamed(*node);
+    }
+
+private:
+    // A node that is USE'd and holds shapes: one geometry wherever it is used.
+    static bool isInstance(const Node& n)
+    {
+        const std::string& t = n.type;
+        return n.useCount > 0 && (t == "Transform" || t == "CADPart" || isGroupNode97(t) || t == "Switch" ||
+                                  t == "LOD" || t == "Shape");
+    }
+
+    static std::string instanceKey(const Node& n)
+    {
+        char key[32];
+        std::snprintf(key, sizeof key, "node %p", static_cast<const void*>(&n));
+        return key;
+    }
+
+    void evaluate(const NodePtr& node, const Mat4& world, const Owner& owner, const std::string& path, int depth)
+    {
         const Owner here = node->defName.empty() ? owner : ctx_.newOwner(instanceName(*node, owner));
         const std::string& type = node->type;
         if (type == "Transform" || type == "CADPart") {
@@ -77,7 +110,7 @@ public:
         } else if (type == "Inline") {
             ctx_.loadInline(stringsField(*node, "url"), node->where, world, here);
         } else if (type == "Shape") {
-            if (ctx_.admit(node, false)) shape(*node, world, here.id < 0 ? ctx_.newOwner(path + "/Shape") : here);
+            if (ctx_.admit(node, false)) shape(*node, world, ctx_.shapeOwner(here, path + "/Shape"));
         } else if (!ignoredNodeTypes().count(type)) {
             ctx_.scene.diagnostics.warn("unknown node", node->where, "node " + type + " ignored");
         }

@@ -17,15 +17,67 @@ namespace cadlod::vrml {
 
 Part& EvalContext::part(const Owner& owner, const std::array<float, 4>& color, const std::string& texture)
 {
+    const bool kept = keepsInstances() && !scopes.empty();
+    std::vector<Part>& parts = kept ? scene.assembly.geometries[scopes.back().geometry].parts : scene.parts;
+    auto& index = kept ? scopes.back().partIndex : partIndex;
     const auto key = std::make_tuple(owner.id, color[0], color[1], color[2], color[3], texture);
-    auto it = partIndex.find(key);
-    if (it != partIndex.end()) return scene.parts[it->second];
-    partIndex[key] = scene.parts.size();
-    Part& p = scene.parts.emplace_back();
+    auto it = index.find(key);
+    if (it != index.end()) return parts[it->second];
+    index[key] = parts.size();
+    Part& p = parts.emplace_back();
     p.name = owner.name;
     p.color = color;
     p.texture = texture;
     return p;
+}
+
+Owner EvalContext::shapeOwner(const Owner& owner, const std::string& path)
+{
+    if (owner.id >= 0) return owner;
+    if (!keepsInstances() || scopes.empty() || scopes.back().geometry == 0) return newOwner(path);
+    GeometryScope& scope = scopes.back();
+    if (scope.shapes.id < 0) scope.shapes = newOwner(scene.assembly.geometries[scope.geometry].name);
+    return scope.shapes;
+}
+
+void EvalContext::placeInstance(const std::string& key, const std::string& name, const Mat4& world,
+                                const std::string& where, const std::function<void()>& evaluate)
+{
+    std::vector<Geometry>& geometries = scene.assembly.geometries;
+    const auto [it, fresh] = geometryOfKey.emplace(key, geometries.size());
+    const std::size_t g = it->second;
+    if (fresh) {
+        geometries.push_back(Geometry{name, {}, {}});
+        reading.push_back(true);
+        scopes.push_back(GeometryScope{g, {}, {}, {}});
+        evaluate();
+        scopes.pop_back();
+        reading[g] = false;
+    } else if (reading[g]) {
+        scene.diagnostics.warn("recursive instance", where, name + " contains itself; skipped");
+        return;
+    }
+    const std::vector<std::string>& names = scopes.back().names;
+    std::string placed;
+    for (const std::string& n : names) placed += (placed.empty() ? "" : "/") + n;
+    geometries[scopes.back().geometry].children.push_back({g, world * frameInverse, placed.empty() ? name : placed});
+}
+
+void EvalContext::noteExpandedUse(const std::string& key)
+{
+    if (!expandedKeys.insert(key).second) ++scene.stats.expandedCopies;
+}
+
+void EvalContext::enterNamed(const Node& node)
+{
+    if (keepsInstances() && !scopes.empty() && !node.defName.empty() && node.useCount == 0)
+        scopes.back().names.push_back(node.defName);
+}
+
+void EvalContext::leaveNamed(const Node& node)
+{
+    if (keepsInstances() && !scopes.empty() && !node.defName.empty() && node.useCount == 0)
+        scopes.back().names.pop_back();
 }
 
 bool EvalContext::admit(const std::vector<NodePtr>& nodes, const std::vector<UseSite>& useSites, bool vrml1)
@@ -100,8 +152,9 @@ bool isKicadStepUpExport(std::string_view text)
 
 class Importer {
 public:
-    explicit Importer(const ImportOptions& options) : options_(options), ctx_{result_.scene, options, {}, {}, {}, 0, {}, {}, {}}
+    explicit Importer(const ImportOptions& options) : options_(options), ctx_(result_.scene, options)
     {
+        ctx_.keepInstances = options.instances == Instances::Keep;
         ctx_.emit.recomputeNormals = options.recomputeNormals;
         ctx_.loadInline = [this](const std::vector<std::string>& urls, const std::string& where, const Mat4& world,
                                  const Owner& owner) { loadInline(urls, where, world, owner); };
@@ -140,10 +193,14 @@ public:
         }
         result_.scene.version = parsed.version == VrmlVersion::V1 ? 1 : 2;
         openFiles_.push_back(canonical(fileName));
-        evaluate(parsed, fileName, rootTransform(kicad), Owner{}, fs::path(fileName).filename().string());
+        const Mat4 root = rootTransform(kicad);
+        const std::string rootName = fs::path(fileName).filename().string();
+        if (ctx_.keepsInstances()) evaluateKeepingInstances(parsed, fileName, root, rootName);
+        else evaluate(parsed, fileName, root, Owner{}, rootName);
         if (ctx_.stopped()) {
             result_.error = ctx_.error;
             result_.scene.parts.clear();
+            result_.scene.assembly = {};
             return std::move(result_);
         }
         dropEmptyParts();
@@ -161,17 +218,58 @@ private:
         const double unit = a.kicadUnits && options_.kicadUnitScale > 0 ? options_.kicadUnitScale : options_.unitScale;
         const double s = unit * a.fileScale;
         const Mat4 scale = Mat4::scale({s, s, s});
+        ctx_.frame = scale;
+        ctx_.frameInverse = Mat4::scale({1 / s, 1 / s, 1 / s});
         if (options_.upAxis == UpAxis::YUpToZUp)
             return Mat4::rotation({1, 0, 0}, std::acos(-1.0) / 2) * scale;
         return scale;
     }
 
+    // The shapes no shared node holds go to the root geometry, in world coordinates. If no
+    // geometry is placed twice there is nothing to share: the file is read again expanded
+    // (parsed files are cached), which is what expanding it gives.
+    void evaluateKeepingInstances(const ParsedFile& parsed, const std::string& fileName, const Mat4& root,
+                                  const std::string& rootName)
+    {
+        result_.scene.assembly.geometries.push_back(Geometry{rootName, {}, {}});
+        ctx_.reading.push_back(true);
+        ctx_.scopes.push_back(GeometryScope{});
+        evaluate(parsed, fileName, root, Owner{}, rootName);
+        ctx_.scopes.clear();
+        if (ctx_.stopped()) return;
+        const Assembly& assembly = result_.scene.assembly;
+        if (assembly.placementCount() > options_.maxPlacements) {
+            ctx_.error = fileName + ": the assembly places " + std::to_string(assembly.placementCount()) +
+                         " parts, more than the limit of " + std::to_string(options_.maxPlacements);
+            return;
+        }
+        if (assembly.sharesGeometry()) return;
+        result_.scene.assembly = {};
+        const size_t bytesRead = result_.scene.stats.bytesRead;
+        result_.scene.stats = SceneStats{};
+        result_.scene.stats.bytesRead = bytesRead;
+        readExpandedAgain(parsed, fileName, root, rootName);
+    }
+
+    void readExpandedAgain(const ParsedFile& parsed, const std::string& fileName, const Mat4& root,
+                           const std::string& rootName)
+    {
+        const Diagnostics diagnostics = result_.scene.diagnostics;
+        ctx_.keepInstances = false;
+        ctx_.partIndex.clear();
+        evaluate(parsed, fileName, root, Owner{}, rootName);
+        result_.scene.diagnostics = diagnostics;  // the first reading said all there was to say
+    }
+
     // Shapes whose geometry was unsupported or all bad leave empty parts behind.
     void dropEmptyParts()
     {
-        auto& parts = result_.scene.parts;
-        parts.erase(std::remove_if(parts.begin(), parts.end(), [](const Part& p) { return p.triangles.empty(); }),
-                    parts.end());
+        auto dropEmpty = [](std::vector<Part>& parts) {
+            parts.erase(std::remove_if(parts.begin(), parts.end(), [](const Part& p) { return p.triangles.empty(); }),
+                        parts.end());
+        };
+        dropEmpty(result_.scene.parts);
+        for (Geometry& g : result_.scene.assembly.geometries) dropEmpty(g.parts);
     }
 
     static std::string canonical(const std::string& path)
@@ -196,7 +294,8 @@ private:
                   const std::string& path)
     {
         const bool vrml1 = parsed.version == VrmlVersion::V1;
-        if (!ctx_.admit(parsed.roots, parsed.rootUseSites, vrml1)) return;
+        // Kept instances are read once each: their shapes are admitted one by one as they are read.
+        if (!ctx_.keepsInstances() && !ctx_.admit(parsed.roots, parsed.rootUseSites, vrml1)) return;
         const std::string savedDir = ctx_.baseDir;
         ctx_.baseDir = directoryOf(fileName);
         if (vrml1) evaluateVrml10(parsed.roots, world, owner, path, ctx_);
@@ -253,9 +352,19 @@ private:
                 return;
             }
             ++result_.scene.stats.inlinesLoaded;
-            openFiles_.push_back(key);
-            evaluate(file->parsed, path, world, owner, fs::path(path).filename().string());
-            openFiles_.pop_back();
+            const std::string name = fs::path(path).filename().string();
+            const auto read = [&, key, path](const Mat4& at, const Owner& as) {
+                openFiles_.push_back(key);
+                evaluate(file->parsed, path, at, as, name);
+                openFiles_.pop_back();
+            };
+            if (ctx_.keepsInstances())
+                ctx_.placeInstance("file " + key, fs::path(path).stem().string(), world, where,
+                                   [&] { read(ctx_.frame, Owner{}); });
+            else {
+                ctx_.noteExpandedUse("file " + key);
+                read(world, owner);
+            }
             return;
         }
         std::string list;

@@ -16,6 +16,11 @@ namespace cadlod::vrml {
 // VRML, so Keep is the default and YUpToZUp is for files that follow VRML's convention.
 enum class UpAxis { Keep, YUpToZUp };
 
+// What shared nodes (a DEF'd node that is USE'd, an Inline file) become. Expand: a copy per
+// use, in world coordinates (Scene::parts). Keep: one geometry per shared node, read once,
+// and its placements (Scene::assembly); a file that shares no geometry is read expanded.
+enum class Instances { Expand, Keep };
+
 struct ImportOptions {
     double unitScale = 1.0;            // applied to the world transform (e.g. 0.001: mm -> m)
     UpAxis upAxis = UpAxis::Keep;      // YUpToZUp: rotate +90 degrees about X, (x, y, z) -> (x, -z, y)
@@ -27,11 +32,15 @@ struct ImportOptions {
     // metres), so a caller need not know beforehand which files are KiCad's; 0: unitScale.
     double kicadUnitScale = 0.0;
     bool recomputeNormals = false;     // ignore file normals, use creaseAngle
+    Instances instances = Instances::Expand;
+    // Keep: the most placements the assembly may expand to (a file that USEs groups of USEs
+    // describes far more placements than it has bytes).
+    uint64_t maxPlacements = 1'000'000;
     int maxInlineDepth = 32;
     int maxNesting = 400;
     size_t maxInflatedBytes = kDefaultMaxInflatedBytes;
     // Triangle limit of the scene, checked before anything is expanded (DEF/USE instancing
-    // multiplies geometry): the larger of maxTriangles and maxTrianglesPerInputByte x the
+    // multiplies geometry; with instances kept, the distinct geometry is counted): the larger of maxTriangles and maxTrianglesPerInputByte x the
     // bytes read (inflated, inlines included). 50 M triangles take 3-7 GB in the Scene
     // (24-140 bytes each, welded to unwelded) and as much again in MeshLab's layer.
     uint64_t maxTriangles = 50'000'000;

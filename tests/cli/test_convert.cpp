@@ -1,5 +1,6 @@
 // cadlod convert end to end: the demo assembly (mm) and a VRML 1.0 file to .flt, read back
-// with OpenSceneGraph: one LOD node per level, contiguous ranges from 0, finest first.
+// with OpenSceneGraph: one LOD node per level, contiguous ranges from 0, finest first. Both
+// share parts: expanded here, for one chain (test_assembly_convert.cpp keeps instances).
 #include "cli_runner.h"
 #include "osg_probe.h"
 
@@ -34,7 +35,7 @@ void expectChain(const OsgProbe& probe, std::size_t levels)
 TEST(CliConvert, DemoAssemblyInMillimetresGivesAnOsgReadableChain)
 {
     const std::string dir = freshDirectory("demo");
-    const CliRun run = runCadlod({"convert", kDemo, "-o", dir + "/demo.flt", "--unit", "mm", "--report",
+    const CliRun run = runCadlod({"convert", kDemo, "-o", dir + "/demo.flt", "--unit", "mm", "--instances", "expand", "--report",
                                   dir + "/report.json"});
     ASSERT_EQ(run.exitCode, 0) << run.stderrText;
     const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/report.json"));
@@ -52,7 +53,8 @@ TEST(CliConvert, DemoAssemblyInMillimetresGivesAnOsgReadableChain)
 TEST(CliConvert, EveryLevelIsLitWithItsCreasesSharp)
 {
     const std::string dir = freshDirectory("creases");
-    const CliRun run = runCadlod({"convert", kDemo, "-o", dir + "/demo.flt", "--unit", "mm", "--lod", "50 90"});
+    const CliRun run = runCadlod({"convert", kDemo, "-o", dir + "/demo.flt", "--unit", "mm", "--lod", "50 90",
+                                  "--instances", "expand"});
     ASSERT_EQ(run.exitCode, 0) << run.stderrText;
     const OsgProbe probe = probeWithOsg(dir + "/demo.flt", "noUnitsConversion");
     ASSERT_TRUE(probe.loaded);
@@ -125,7 +127,8 @@ TEST(CliConvert, AnOpenFlightInputHonoursTheMergeTolerance)
 TEST(CliConvert, Vrml1FileConverts)
 {
     const std::string dir = freshDirectory("vrml1");
-    const CliRun run = runCadlod({"convert", kVrml1, "-o", dir + "/head.flt", "--report", dir + "/r.json"});
+    const CliRun run = runCadlod({"convert", kVrml1, "-o", dir + "/head.flt", "--instances", "expand", "--report",
+                                  dir + "/r.json"});
     ASSERT_EQ(run.exitCode, 0) << run.stderrText;
     const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/r.json"));
     EXPECT_EQ(report.at("input").at("format"), "VRML");
@@ -136,7 +139,7 @@ TEST(CliConvert, PercentageListBuildsThePapersLevels)
 {
     const std::string dir = freshDirectory("list");
     const CliRun run = runCadlod({"convert", kDemo, "-o", dir + "/list.flt", "--unit", "mm", "--lod", "50 90",
-                                  "--report", dir + "/r.json"});
+                                  "--instances", "expand", "--report", dir + "/r.json"});
     ASSERT_EQ(run.exitCode, 0) << run.stderrText;
     const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/r.json"));
     const auto& levels = report.at("levels");
@@ -149,7 +152,7 @@ TEST(CliConvert, PercentageListBuildsThePapersLevels)
 TEST(CliConvert, ReportHasInputOptionsLevelsAndTimings)
 {
     const std::string dir = freshDirectory("report");
-    const CliRun run = runCadlod({"convert", kDemo, "-o", dir + "/d.flt", "--unit", "mm", "--pixel-error", "2",
+    const CliRun run = runCadlod({"convert", kDemo, "-o", dir + "/d.flt", "--unit", "mm", "--instances", "expand", "--pixel-error", "2",
                                   "--report", dir + "/r.json"});
     ASSERT_EQ(run.exitCode, 0) << run.stderrText;
     const nlohmann::json r = nlohmann::json::parse(readFile(dir + "/r.json"));

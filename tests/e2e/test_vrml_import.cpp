@@ -124,3 +124,21 @@ TEST(VrmlImportE2E, NonVrmlFileFailsWithAClearMessage)
     EXPECT_FALSE(run.ok());
     EXPECT_NE(run.output.find("not a VRML file"), std::string::npos) << run.output;
 }
+
+// A MeshLab layer is one mesh: a file that places shared parts is expanded into it, and the
+// log says so (and where the instances are kept) instead of losing them silently.
+TEST(VrmlImportE2E, SharedPartsAreExpandedAndTheLogSaysSo)
+{
+    const std::string dir = scratchDir("vrml_e2e_shared");
+    writeText(dir + "/shared.wrl", "#VRML V2.0 utf8\nDEF BOLT Transform { children Shape { geometry Box {} } }\n"
+                                   "Transform { translation 5 0 0 children USE BOLT }\n"
+                                   "Transform { translation 10 0 0 children USE BOLT }\n");
+    const ServerRun run = convert(dir + "/shared.wrl", dir + "/shared.ply");
+    ASSERT_TRUE(run.ok()) << run.output;
+    EXPECT_NE(run.output.find("places shared parts (USE, Inline) 2 more times"), std::string::npos) << run.output;
+    TestMesh m;
+    int mask = 0;
+    std::string error;
+    ASSERT_TRUE(loadPly(dir + "/shared.ply", m, mask, error)) << error;
+    EXPECT_EQ(m.fn, 3 * 12);
+}

@@ -22,7 +22,7 @@ Counted count(const std::vector<NodePtr>& roots, bool vrml1)
 {
     Scene scene;
     ImportOptions options;
-    EvalContext ctx{scene, options, {}, {}, {}, 0, {}, {}, {}};
+    EvalContext ctx(scene, options);
     ctx.loadInline = [](const std::vector<std::string>&, const std::string&, const Mat4&, const Owner&) {};
     Counted c;
     for (const NodePtr& r : roots)

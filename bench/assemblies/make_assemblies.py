@@ -1,0 +1,108 @@
+#!/usr/bin/env python3
+"""Writes instanced CAD assemblies from KiCad's 3D model library (Debian kicad-packages3d),
+the way CAD exports share parts: each distinct part one file placed by Inline, boards
+DEF'd once and USE'd, racks of boards USE'd again, some parts placed in a mirror.
+
+  make_assemblies.py OUTDIR [NAME RACKS BOARDS PARTS_PER_BOARD DISTINCT SEED]...
+
+With no assembly given it writes the bench's set:
+  cabinet     3 racks x 8 boards x 80 parts  = 1,920 placements of 48 distinct parts
+  cabinet_q   1 rack  x 4 boards x 80 parts  =   320 placements (a quarter)
+  plant      10 racks x 10 boards x 100 parts = 10,000 placements of 64 distinct parts
+Units are KiCad's (0.1 inch): convert with --unit 0.1in. Deterministic for a seed.
+"""
+import os
+import random
+import shutil
+import sys
+
+KICAD = "/usr/share/kicad/3dmodels"
+FAMILIES = ["Capacitor_SMD", "Resistor_SMD", "Package_SO", "Package_QFP", "Connector_RJ", "Connector_PinHeader_2.54mm",
+            "Package_TO_SOT_SMD", "Crystal", "Inductor_SMD", "Button_Switch_SMD", "Diode_SMD", "LED_SMD",
+            "Capacitor_THT", "Connector_USB", "Package_DIP", "Relay_THT"]
+DEFAULT_SET = [("cabinet", 3, 8, 80, 48, 1), ("cabinet_q", 1, 4, 80, 48, 1), ("plant", 10, 10, 100, 64, 2)]
+
+
+def library_parts(distinct, rng):
+    """`distinct` KiCad part files, spread over the families, smallest files skipped."""
+    chosen = []
+    per_family = {}
+    for family in FAMILIES:
+        folder = os.path.join(KICAD, family + ".3dshapes")
+        if os.path.isdir(folder):
+            files = sorted(f for f in os.listdir(folder) if f.endswith(".wrl"))
+            per_family[family] = [os.path.join(folder, f) for f in files if os.path.getsize(os.path.join(folder, f)) > 20000]
+    families = [f for f in FAMILIES if per_family.get(f)]
+    if not families:
+        sys.exit("make_assemblies.py: no KiCad 3D models in %s (apt-get install kicad-packages3d)" % KICAD)
+    k = 0
+    while len(chosen) < distinct:
+        pool = per_family[families[k % len(families)]]
+        pick = pool[rng.randrange(len(pool))]
+        if pick not in chosen:
+            chosen.append(pick)
+        k += 1
+    return chosen
+
+
+def board_text(name, parts, per_board, rng, pitch):
+    """A board: its PCB (a box) and `per_board` parts placed on a grid by Inline."""
+    side = int(per_board ** 0.5 + 0.999)
+    lines = ["DEF %s Group { children [" % name,
+             "  Shape { appearance Appearance { material Material { diffuseColor 0 0.4 0.1 } } "
+             "geometry Box { size %g %g 0.6 } }" % (side * pitch, side * pitch)]
+    for i in range(per_board):
+        x = (i % side - side / 2 + 0.5) * pitch
+        y = (i // side - side / 2 + 0.5) * pitch
+        part = parts[rng.randrange(len(parts))]
+        turn = rng.choice([0, 1.5708, 3.1416, 4.7124])
+        mirror = " scale -1 1 1" if rng.random() < 0.05 else ""
+        lines.append("  DEF U%d Transform { translation %g %g 0.3 rotation 0 0 1 %g%s children Inline { url \"parts/%s\" } }"
+                     % (i + 1, x, y, turn, mirror, os.path.basename(part)))
+    lines.append("] }")
+    return "\n".join(lines)
+
+
+def write_assembly(out, name, racks, boards, per_board, distinct, seed):
+    rng = random.Random(seed)
+    folder = os.path.join(out, name)
+    os.makedirs(os.path.join(folder, "parts"), exist_ok=True)
+    parts = library_parts(distinct, rng)
+    for p in parts:
+        target = os.path.join(folder, "parts", os.path.basename(p))
+        if not os.path.exists(target):
+            shutil.copyfile(p, target)
+    pitch = 60.0  # 6 inch grid, in KiCad's 0.1 inch
+    side = int(per_board ** 0.5 + 0.999)
+    board_size = side * pitch
+    text = ["#VRML V2.0 utf8", "# %s: %d racks x %d boards x %d parts, %d distinct (cadlod bench/assemblies)"
+            % (name, racks, boards, per_board, distinct)]
+    designs = [board_text("BOARD_A", parts, per_board, rng, pitch), board_text("BOARD_B", parts, per_board, rng, pitch)]
+    text.append("DEF RACK Group { children [")
+    for b in range(boards):
+        body = designs[b] if b < 2 else "USE BOARD_%s" % "AB"[b % 2]
+        text.append(" DEF Board_%d Transform { translation 0 0 %g rotation 1 0 0 1.5708 children %s }"
+                    % (b + 1, b * 40.0, body))
+    text.append("] }")
+    for r in range(1, racks):
+        text.append("DEF Rack_%d Transform { translation %g 0 0 children USE RACK }" % (r + 1, r * (board_size + 100)))
+    path = os.path.join(folder, name + ".wrl")
+    with open(path, "w") as f:
+        f.write("\n".join(text) + "\n")
+    print("%s: %d placements of %d distinct parts" % (path, racks * boards * per_board, distinct))
+
+
+def main():
+    if len(sys.argv) < 2:
+        sys.exit(__doc__)
+    out = sys.argv[1]
+    specs = sys.argv[2:]
+    todo = DEFAULT_SET if not specs else [
+        (specs[i], int(specs[i + 1]), int(specs[i + 2]), int(specs[i + 3]), int(specs[i + 4]), int(specs[i + 5]))
+        for i in range(0, len(specs), 6)]
+    for spec in todo:
+        write_assembly(out, *spec)
+
+
+if __name__ == "__main__":
+    main()

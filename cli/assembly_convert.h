@@ -1,0 +1,40 @@
+// An assembly whose instances are kept, to an instanced OpenFlight model: each distinct
+// part through a LOD chain of its own, in its own frame (so its switch distances hold in
+// every placement, OSG measuring the eye's distance in the part's frame), its switch
+// distances pushed out by its radius (so they hold at its nearest point), then one placement
+// per use, named by its path.
+#pragma once
+#include "lod_output.h"
+#include "mesh_files.h"
+
+#include "lod/lod_builder.h"
+#include "openflight/instanced_writer.h"
+#include "vrml/scene.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace cadlod::cli {
+
+// The chain of one part: `original` is ready for the simplifier, the levels go to `store`.
+using BuildChain = std::function<LodSetResult(CoreMesh& original, LevelStore& store)>;
+
+struct PartChain {
+    std::string name;
+    std::size_t placements = 0;
+    int triangles = 0;           // level 0
+    LodSetResult result;         // levels and what the chain said
+};
+
+struct AssemblyConversion {
+    flt::InstancedModel model;
+    std::vector<PartChain> parts;  // one per definition of the model
+    std::size_t skippedFaces = 0;  // degenerate faces the level conversion dropped
+};
+
+// Throws InputError when a part cannot be converted (its name in the message).
+AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& rootName, const ImportSettings& settings,
+                                   const BuildChain& buildChain);
+
+}  // namespace cadlod::cli

@@ -1,0 +1,172 @@
+#include "openflight/instanced_writer.h"
+
+#include "openflight/level_writer.h"
+
+#include <map>
+#include <utility>
+
+namespace cadlod::flt {
+namespace {
+
+double determinant3(const Mat4d& m)
+{
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+std::size_t finestTriangles(const PartDefinition& d)
+{
+    return d.levels.empty() ? 0 : d.levels.front().triangleCount();
+}
+
+// A definition as written: the part, and whether it is seen in a mirror.
+using WrittenForm = std::pair<std::size_t, bool>;
+
+class InstancedWriter {
+public:
+    InstancedWriter(const InstancedModel& model, const WriteOptions& options, ByteWriter& w, InstancedWriteStats& stats)
+        : model_(model), w_(w), stats_(stats), levels_(options, w, stats, model.distinctTriangles())
+    {
+        for (const PartPlacement& p : model.placements)
+            ++uses_[{p.definition, p.mirrored()}];
+    }
+
+    bool write(std::string& error)
+    {
+        writeDatabaseHead(w_, model_.name, model_.units);
+        openRootGroup(w_, model_.name);
+        for (const PartPlacement& p : model_.placements)
+            if (!writePlacement(p, error))
+                return false;
+        closeRootGroup(w_);
+        return true;
+    }
+
+private:
+    bool writePlacement(const PartPlacement& p, std::string& error)
+    {
+        const WrittenForm form{p.definition, p.mirrored()};
+        const bool shared = uses_[form] > 1;
+        int number = 0;
+        if (shared && !defineOnce(form, number, error))
+            return false;
+        writeGroup(w_, p.name);
+        writeLongIdIfNeeded(w_, p.name);
+        writeMatrix(w_, p.matrix);
+        writePush(w_);
+        if (shared) {
+            writeInstanceReference(w_, number);
+            ++stats_.instanceReferences;
+        } else {
+            writeLevelsOf(form);
+        }
+        writePop(w_);
+        ++stats_.placements;
+        return true;
+    }
+
+    // The Instance Definition of `form`, written before its first reference.
+    bool defineOnce(const WrittenForm& form, int& number, std::string& error)
+    {
+        const auto known = numbers_.find(form);
+        if (known != numbers_.end()) {
+            number = known->second;
+            return true;
+        }
+        number = int(numbers_.size()) + 1;
+        if (number > kMaxInstanceNumber) {
+            error = "more than " + std::to_string(kMaxInstanceNumber) + " shared parts: instance numbers are 16-bit";
+            return false;
+        }
+        numbers_[form] = number;
+        writeInstanceDefinition(w_, number);
+        writePush(w_);
+        writeLevelsOf(form);
+        writePop(w_);
+        ++stats_.instanceDefinitions;
+        return true;
+    }
+
+    void writeLevelsOf(const WrittenForm& form)
+    {
+        const std::vector<Level>& levels = model_.definitions[form.first].levels;
+        levels_.writeLevels(levels, writesLodRecords(levels), form.second);
+    }
+
+    const InstancedModel& model_;
+    ByteWriter& w_;
+    InstancedWriteStats& stats_;
+    LevelWriter levels_;
+    std::map<WrittenForm, int> uses_;
+    std::map<WrittenForm, int> numbers_;
+};
+
+bool validate(const InstancedModel& model, const WriteOptions& options, std::string& error)
+{
+    if (options.geometry != GeometryRecords::Meshes) {
+        error = "an instanced model is written with Mesh records only";
+        return false;
+    }
+    for (const PartDefinition& d : model.definitions)
+        if (!validateLevels(d.levels, error)) {
+            error = "part " + d.name + ": " + error;
+            return false;
+        }
+    for (const PartPlacement& p : model.placements)
+        if (p.definition >= model.definitions.size()) {
+            error = "placement " + p.name + " refers to part " + std::to_string(p.definition) + " of " +
+                    std::to_string(model.definitions.size());
+            return false;
+        }
+    return true;
+}
+
+}  // namespace
+
+bool PartPlacement::mirrored() const { return determinant3(matrix) < 0; }
+
+std::size_t InstancedModel::distinctTriangles() const
+{
+    std::size_t n = 0;
+    for (const PartDefinition& d : definitions)
+        for (const Level& l : d.levels)
+            n += l.triangleCount();
+    return n;
+}
+
+std::size_t InstancedModel::placedTriangles() const
+{
+    std::size_t n = 0;
+    for (const PartPlacement& p : placements)
+        n += finestTriangles(definitions.at(p.definition));
+    return n;
+}
+
+bool writeInstancedOpenFlight(const InstancedModel& model, const WriteOptions& options, std::vector<std::uint8_t>& out,
+                              std::string& error, InstancedWriteStats* stats)
+{
+    if (!validate(model, options, error))
+        return false;
+    InstancedWriteStats local;
+    InstancedWriteStats& s = stats ? *stats : local;
+    s = InstancedWriteStats{};
+    out.clear();
+    ByteWriter w(out);
+    if (!InstancedWriter(model, options, w, s).write(error))
+        return false;
+    s.bytes = out.size();
+    return true;
+}
+
+bool writeInstancedOpenFlightFile(const std::string& path, const InstancedModel& model, const WriteOptions& options,
+                                  std::string& error, InstancedWriteStats* stats)
+{
+    return writeDatabaseFile(
+        path,
+        [&](std::vector<std::uint8_t>& bytes, std::string& e) {
+            return writeInstancedOpenFlight(model, options, bytes, e, stats);
+        },
+        error);
+}
+
+}  // namespace cadlod::flt

@@ -1,0 +1,55 @@
+// Writes an assembly of placed parts as OpenFlight (design.md §7, instancing): each distinct
+// part's levels once, and a Group with a Matrix per placement, named by its path.
+//   Header, palettes, Push Group Push {
+//     [Instance Definition n Push {levels} Pop]   before the first placement of a shared part
+//     Group Matrix Push { Instance Reference n | levels } Pop
+//   }* Pop Pop
+// A part placed once is written inside its Group. A part placed in a mirror (negative
+// determinant) has a definition of its own, its triangles turned round, so that its faces
+// stay outward. OSG drops a Matrix on an Instance Reference, so it goes on the Group.
+#pragma once
+
+#include "openflight/flt_writer.h"
+
+#include <string>
+#include <vector>
+
+namespace cadlod::flt {
+
+struct PartDefinition {
+    std::string name;
+    std::vector<Level> levels;  // finest first, in the part's own frame
+};
+
+struct PartPlacement {
+    std::string name;           // unique in the model
+    Mat4d matrix{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};  // part frame -> model
+    std::size_t definition = 0;
+
+    bool mirrored() const;
+};
+
+struct InstancedModel {
+    std::string name = "cadlod";
+    Units units = Units::Meters;
+    std::vector<PartDefinition> definitions;
+    std::vector<PartPlacement> placements;
+
+    std::size_t distinctTriangles() const;  // every definition's levels once
+    std::size_t placedTriangles() const;    // the finest level of every placement
+};
+
+struct InstancedWriteStats : WriteStats {
+    std::size_t placements = 0;
+    std::size_t instanceDefinitions = 0;
+    std::size_t instanceReferences = 0;
+};
+
+// Mesh records only (Face records share one Vertex Palette, which instances cannot).
+bool writeInstancedOpenFlight(const InstancedModel& model, const WriteOptions& options, std::vector<std::uint8_t>& out,
+                              std::string& error, InstancedWriteStats* stats = nullptr);
+// Through a temporary file renamed into place, as writeOpenFlightFile.
+bool writeInstancedOpenFlightFile(const std::string& path, const InstancedModel& model, const WriteOptions& options,
+                                  std::string& error, InstancedWriteStats* stats = nullptr);
+
+}  // namespace cadlod::flt
