@@ -1,6 +1,7 @@
 #include "cli_options.h"
 
 #include "cli_errors.h"
+#include "unit_choice.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -9,12 +10,39 @@
 #include <vector>
 
 namespace cadlod::cli {
+namespace {
+
+// A CLI11 check: empty when `unit` is one, else why not.
+std::string checkUnit(const std::string& unit, const std::string& option)
+{
+    try {
+        unitScaleOf(unit, option);
+        return {};
+    } catch (const UsageError& e) {
+        return e.what();
+    }
+}
+
+}  // namespace
 
 void addImportOptions(CLI::App& app, ImportArgs& a)
 {
     app.add_option("--unit", a.unit,
-                   "Unit of the input coordinates: mm, cm, m, in, 0.1in or a factor to metres (scaled to metres)")
+                   "Unit of the input coordinates: mm, cm, m, in, 0.1in or a factor to metres (scaled to metres); "
+                   "wins over a KiCad StepUp header (0.1 inch)")
+        ->check([](const std::string& u) { return checkUnit(u, "--unit"); });
+    app.add_option("--default-unit", a.defaultUnit,
+                   "Unit when neither --unit nor the file says (KiCad StepUp files say 0.1 inch)")
+        ->check([](const std::string& u) { return checkUnit(u, "--default-unit"); })
+        ->each([&a](const std::string&) { a.defaultUnitGiven = true; })
         ->capture_default_str();
+    app.add_option("--up-axis", a.upAxis, "keep: as in the file (CAD exports are Z-up); y: +Y up (VRML's convention), "
+                                          "turned to OpenFlight's +Z")
+        ->check(CLI::IsMember({"keep", "y"}))
+        ->capture_default_str();
+    app.add_flag("--allow-partial", a.allowPartial,
+                 "Convert what was read of an input that lost geometry (syntax error, missing Inline, ...); "
+                 "the report names what was lost");
     app.add_flag("--no-merge", a.noMerge, "Do not weld coincident vertices");
     app.add_option("--merge-tolerance", a.mergeTolerance,
                    "Also merge vertices closer than this (model units, after scaling)")
@@ -90,23 +118,15 @@ void addCommonOptions(CLI::App& app, CommonArgs& a)
     app.add_flag("-q,--quiet", a.quiet, "No progress on stderr");
 }
 
-double unitScaleOf(const std::string& unit)
-{
-    static const std::map<std::string, double> named{
-        {"mm", 0.001}, {"cm", 0.01}, {"m", 1.0}, {"in", 0.0254}, {"0.1in", 0.00254}};
-    if (auto it = named.find(unit); it != named.end())
-        return it->second;
-    char* end = nullptr;
-    const double factor = std::strtod(unit.c_str(), &end);
-    if (unit.empty() || *end != '\0' || !(factor > 0))
-        throw UsageError("--unit: '" + unit + "' is neither mm, cm, m, in, 0.1in nor a positive factor");
-    return factor;
-}
-
 ImportSettings importSettings(const ImportArgs& a)
 {
     ImportSettings s;
-    s.unitScale = unitScaleOf(a.unit);
+    s.unit = a.unit;
+    s.defaultUnit = a.defaultUnit;
+    s.defaultUnitGiven = a.defaultUnitGiven;
+    s.unitScale = unitScaleOf(a.unit.empty() ? a.defaultUnit : a.unit, a.unit.empty() ? "--default-unit" : "--unit");
+    s.yUpToZUp = a.upAxis == "y";
+    s.allowPartial = a.allowPartial;
     s.mergeVertices = !a.noMerge;
     s.mergeTolerance = a.mergeTolerance;
     s.recomputeNormals = a.normals == "recompute";
@@ -141,10 +161,16 @@ SaveSettings saveSettings(const ExportArgs& a)
     return s;
 }
 
-nlohmann::json toJson(const ImportArgs& a)
+nlohmann::json toJson(const ImportArgs& a, const LoadedMesh& loaded)
 {
-    return {{"unit", a.unit},
-            {"unitScale", unitScaleOf(a.unit)},
+    return {{"unit", loaded.unit.unit},
+            {"unitScale", loaded.unit.scale},
+            {"unitSource", loaded.unit.source},
+            {"defaultUnit", a.defaultUnit},
+            {"kicadHeader", loaded.kicadHeader},
+            {"kicadUnitApplied", loaded.kicadUnitApplied},
+            {"upAxis", a.upAxis},
+            {"allowPartial", a.allowPartial},
             {"mergeVertices", !a.noMerge},
             {"mergeTolerance", a.mergeTolerance},
             {"normals", a.normals}};

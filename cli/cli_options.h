@@ -13,7 +13,11 @@
 namespace cadlod::cli {
 
 struct ImportArgs {
-    std::string unit = "m";  // mm|cm|m|in|0.1in|<factor>
+    std::string unit;                 // mm|cm|m|in|0.1in|<factor>; empty: not given
+    std::string defaultUnit = "m";    // the unit when neither --unit nor the file says
+    bool defaultUnitGiven = false;
+    std::string upAxis = "keep";      // keep|y
+    bool allowPartial = false;        // convert what was read of an input that lost geometry
     bool noMerge = false;
     float mergeTolerance = 0.0f;
     std::string normals = "keep";  // keep|recompute
@@ -46,12 +50,12 @@ void addExportOptions(CLI::App& app, ExportArgs& a);
 void addCommonOptions(CLI::App& app, CommonArgs& a);
 
 // Throws UsageError for a unit that is neither a name nor a positive factor.
-double unitScaleOf(const std::string& unit);
 ImportSettings importSettings(const ImportArgs& a);
 void applyProtection(const ProtectionArgs& a, SimplifyParams& p);
 SaveSettings saveSettings(const ExportArgs& a);
 
-nlohmann::json toJson(const ImportArgs& a);
+// The import options, with what loading found: the unit used and why, KiCad's header.
+nlohmann::json toJson(const ImportArgs& a, const LoadedMesh& loaded);
 nlohmann::json toJson(const ProtectionArgs& a);
 nlohmann::json toJson(const ExportArgs& a);
 

@@ -2,6 +2,7 @@
 // percentage list, one OpenFlight LOD model, optional JSON report.
 #include "cli_errors.h"
 #include "cli_options.h"
+#include "input_losses.h"
 #include "commands.h"
 #include "assembly_convert.h"
 #include "lod_output.h"
@@ -15,6 +16,9 @@
 #include "openflight/flt_writer.h"
 
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <deque>
 #include <memory>
 
@@ -79,7 +83,7 @@ LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& s
     return buildLodSet<CoreMesh>(original, o, newLevel, progress::callback);
 }
 
-nlohmann::json optionsJson(const ConvertArgs& a)
+nlohmann::json optionsJson(const ConvertArgs& a, const LoadedMesh& loaded)
 {
     return {{"lod", a.lod},
             {"instances", a.instances},
@@ -91,12 +95,46 @@ nlohmann::json optionsJson(const ConvertArgs& a)
             {"proxyPixels", a.proxyPixels},
             {"fromOriginal", a.fromOriginal},
             {"samples", a.samples},
-            {"import", toJson(a.import)},
+            {"import", toJson(a.import, loaded)},
             {"simplify", toJson(a.protection)},
             {"export", toJson(a.exporting)}};
 }
 
-void printSummary(const LodSetResult& r, const flt::WriteStats& written, const std::string& output)
+nlohmann::json reportJson(const ConvertArgs& a, const LoadedMesh& loaded, const LodSetResult& result,
+                          const flt::WriteStats& written, std::size_t skipped, const nlohmann::json& timings)
+{
+    nlohmann::json input{{"path", a.input}, {"format", formatName(loaded.format)}, {"parts", loaded.parts},
+                         {"faces", result.levels.front().faces}, {"mergedVertices", loaded.mergedVertices}};
+    input.update(findingsJson(loaded));
+    std::vector<std::string> warnings = warningLines(loaded);
+    warnings.insert(warnings.end(), result.warnings.begin(), result.warnings.end());
+    return {{"command", "convert"},
+            {"input", input},
+            {"output", {{"path", a.output}, {"bytes", written.bytes}, {"triangles", written.triangles},
+                        {"objects", written.objects}, {"lodNodes", written.lodNodes},
+                        {"skippedDegenerateFaces", skipped}}},
+            {"options", optionsJson(a, loaded)},
+            {"modelSize", result.modelSize},
+            {"levels", levelsJson(result, viewOf(a))},
+            {"droppedLevels", result.droppedLevels},
+            {"warnings", warnings},
+            {"warningCount", warningCount(loaded) + result.warnings.size()},
+            {"timings", timings}};
+}
+
+// The model's bytes go to the OutputSet's temporary, renamed into place with the report.
+void writeFlt(OutputSet& outputs, const std::string& path, const flt::LodModel& model,
+              const flt::WriteOptions& options, flt::WriteStats& written)
+{
+    std::vector<std::uint8_t> bytes;
+    std::string error;
+    if (!flt::writeOpenFlight(model, options, bytes, error, &written))
+        throw InputError(path + ": " + error);
+    outputs.write(path, [&](const std::string& temporary) { return writeBytesTo(temporary, bytes); });
+}
+
+void printSummary(const LodSetResult& r, const flt::WriteStats& written, const std::string& output,
+                  const LoadedMesh& loaded)
 {
     std::fprintf(stderr, "cadlod: %s: %zu levels, %zu triangles, %zu bytes (model size %.6g)\n", output.c_str(),
                  r.levels.size(), written.triangles, written.bytes, r.modelSize);
@@ -107,6 +145,10 @@ void printSummary(const LodSetResult& r, const flt::WriteStats& written, const s
                      l.switchIn >= kNeverCulled ? "never" : std::to_string(l.switchIn).c_str());
     for (const std::string& w : r.warnings)
         std::fprintf(stderr, "cadlod: note: %s\n", w.c_str());
+    if (loaded.format == InputFormat::Vrml)
+        std::fprintf(stderr, "cadlod: input unit %s%s\n", loaded.unit.describe().c_str(),
+                     loaded.kicadHeader && !loaded.kicadUnitApplied ? "; KiCad StepUp header found, its 0.1 inch not applied" : "");
+    printFindingsSummary(loaded);
 }
 
 void printAssemblySummary(const AssemblyConversion& c, const flt::InstancedWriteStats& written,
@@ -132,9 +174,32 @@ nlohmann::json partsJson(const AssemblyConversion& c, const ViewParams& view)
     return parts;
 }
 
+nlohmann::json assemblyReportJson(const ConvertArgs& a, const AssemblyConversion& c,
+                                  const flt::InstancedWriteStats& written, const LoadedMesh& loaded,
+                                  double importSeconds, double lodSeconds, double writeSeconds, double totalSeconds)
+{
+    nlohmann::json input{{"path", a.input}, {"format", "VRML"}, {"parts", c.parts.size()},
+                         {"placements", written.placements}, {"faces", c.model.placedTriangles()}};
+    input.update(findingsJson(loaded));
+    return {
+        {"command", "convert"},
+        {"input", input},
+        {"output", {{"path", a.output}, {"bytes", written.bytes}, {"triangles", written.triangles},
+                    {"objects", written.objects}, {"lodNodes", written.lodNodes}, {"placements", written.placements},
+                    {"instanceDefinitions", written.instanceDefinitions},
+                    {"instanceReferences", written.instanceReferences},
+                    {"skippedDegenerateFaces", c.skippedFaces}}},
+        {"options", optionsJson(a, loaded)},
+        {"parts", partsJson(c, viewOf(a))},
+        {"warnings", warningLines(loaded)},
+        {"warningCount", warningCount(loaded)},
+        {"timings", {{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds}, {"writeSeconds", writeSeconds},
+                     {"totalSeconds", totalSeconds}}}};
+}
+
 // An assembly that shares geometry: each distinct part simplified once, placed by instances.
 void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSettings& importing,
-                      const SaveSettings& saving, Clock::time_point t0)
+                      const SaveSettings& saving, Clock::time_point t0, OutputSet& outputs, const LoadedMesh& loaded)
 {
     if (saving.flt.geometry != flt::GeometryRecords::Meshes)
         throw UsageError(a.input + ": shared parts are written with Mesh records; use --records mesh, or "
@@ -151,38 +216,34 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     flt::WriteOptions writeOptions = saving.flt;
     writeOptions.progress = [](int p) { progress::report(p, "Writing OpenFlight"); };
     flt::InstancedWriteStats written;
+    std::vector<std::uint8_t> bytes;
     std::string error;
-    if (!flt::writeInstancedOpenFlightFile(a.output, c.model, writeOptions, error, &written))
-        throw InputError(error);
+    if (!flt::writeInstancedOpenFlight(c.model, writeOptions, bytes, error, &written))
+        throw InputError(a.output + ": " + error);
+    outputs.write(a.output, [&](const std::string& temporary) { return writeBytesTo(temporary, bytes); });
     const double writeSeconds = secondsSince(t2);
     progress::finish();
-    if (!a.common.quiet)
+    if (!a.report.empty())
+        outputs.write(a.report, [&](const std::string& temporary) {
+            return writeJsonTo(temporary, assemblyReportJson(a, c, written, loaded, importSeconds, lodSeconds,
+                                                             writeSeconds, secondsSince(t0)));
+        });
+    outputs.commit();
+    if (!a.common.quiet) {
         printAssemblySummary(c, written, a.output);
-    if (a.report.empty())
-        return;
-    nlohmann::json report{
-        {"command", "convert"},
-        {"input", {{"path", a.input}, {"format", "VRML"}, {"parts", c.parts.size()},
-                   {"placements", written.placements}, {"faces", c.model.placedTriangles()}}},
-        {"output", {{"path", a.output}, {"bytes", written.bytes}, {"triangles", written.triangles},
-                    {"objects", written.objects}, {"lodNodes", written.lodNodes}, {"placements", written.placements},
-                    {"instanceDefinitions", written.instanceDefinitions},
-                    {"instanceReferences", written.instanceReferences},
-                    {"skippedDegenerateFaces", c.skippedFaces}}},
-        {"options", optionsJson(a)},
-        {"parts", partsJson(c, viewOf(a))},
-        {"timings", {{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds}, {"writeSeconds", writeSeconds},
-                     {"totalSeconds", secondsSince(t0)}}}};
-    writeJsonFile(a.report, report);
+        printFindingsSummary(loaded);
+    }
 }
+
 
 void runConvert(const ConvertArgs& a)
 {
     if (extensionOf(a.output) != "flt")
         throw UsageError(a.output + ": convert writes OpenFlight (.flt); use 'cadlod simplify' for PLY/OBJ/STL");
-    checkWritable(a.output, a.common.force);
+    OutputSet outputs(a.common.force);
+    outputs.add(a.output, "-o");
     if (!a.report.empty())
-        checkWritable(a.report, a.common.force);
+        outputs.add(a.report, "--report");
     ImportSettings importing = importSettings(a.import);
     importing.keepInstances = a.instances == "keep";
     const SaveSettings saving = saveSettings(a.exporting);
@@ -194,7 +255,7 @@ void runConvert(const ConvertArgs& a)
     vrml::Scene assembly;
     const LoadedMesh loaded = loadMesh(a.input, original, importing, &assembly);
     if (loaded.placements > 0) {
-        convertInstanced(a, assembly, importing, saving, t0);
+        convertInstanced(a, assembly, importing, saving, t0, outputs, loaded);
         return;
     }
     const double importSeconds = secondsSince(t0);
@@ -216,31 +277,46 @@ void runConvert(const ConvertArgs& a)
     flt::WriteOptions writeOptions = saving.flt;
     writeOptions.progress = [](int p) { progress::report(p, "Writing OpenFlight"); };
     flt::WriteStats written;
-    std::string error;
-    if (!flt::writeOpenFlightFile(a.output, model, writeOptions, error, &written))
-        throw InputError(error);
+    writeFlt(outputs, a.output, model, writeOptions, written);
     const double writeSeconds = secondsSince(t2);
     progress::finish();
+    if (!a.report.empty()) {
+        const nlohmann::json timings{{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds},
+                                     {"lodMeasureSeconds", result.measureSeconds}, {"writeSeconds", writeSeconds},
+                                     {"totalSeconds", secondsSince(t0)}};
+        const nlohmann::json report = reportJson(a, loaded, result, written, skipped, timings);
+        outputs.write(a.report, [&](const std::string& temporary) { return writeJsonTo(temporary, report); });
+    }
+    outputs.commit();
     if (!a.common.quiet)
-        printSummary(result, written, a.output);
+        printSummary(result, written, a.output, loaded);
+}
 
-    if (a.report.empty())
-        return;
-    nlohmann::json report{{"command", "convert"},
-                          {"input", {{"path", a.input}, {"format", formatName(loaded.format)}, {"parts", loaded.parts},
-                                     {"faces", result.levels.front().faces}, {"mergedVertices", loaded.mergedVertices}}},
-                          {"output", {{"path", a.output}, {"bytes", written.bytes}, {"triangles", written.triangles},
-                                      {"objects", written.objects}, {"lodNodes", written.lodNodes},
-                                      {"skippedDegenerateFaces", skipped}}},
-                          {"options", optionsJson(a)},
-                          {"modelSize", result.modelSize},
-                          {"levels", levelsJson(result, viewOf(a))},
-                          {"droppedLevels", result.droppedLevels},
-                          {"warnings", result.warnings},
-                          {"timings", {{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds},
-                                       {"lodMeasureSeconds", result.measureSeconds},
-                                       {"writeSeconds", writeSeconds}, {"totalSeconds", secondsSince(t0)}}}};
-    writeJsonFile(a.report, report);
+// "auto" or a level list the LOD planner accepts (lod_plan.h), checked before any work.
+CLI::Validator levelListCheck()
+{
+    return CLI::Validator(
+        [](const std::string& list) -> std::string {
+            if (list == "auto")
+                return {};
+            const LevelPlan plan = planLevels(list, LevelSpec::ReductionPercent, std::numeric_limits<int>::max());
+            return plan.ok() ? std::string() : "--lod \"" + list + "\": " + plan.error;
+        },
+        "auto|LIST");
+}
+
+CLI::Validator openRange(double low, double high)
+{
+    return CLI::Validator(
+        [low, high](const std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (text.empty() || *end != '\0' || !(v > low && v < high))
+                return "'" + text + "' is not a number above " + std::to_string(int(low)) +
+                       (std::isfinite(high) ? " and below " + std::to_string(int(high)) : std::string());
+            return {};
+        },
+        "");
 }
 
 }  // namespace
@@ -253,16 +329,23 @@ void addConvertCommand(CLI::App& app)
     cmd->add_option("-o,--output", args->output, "Output .flt")->required();
     cmd->add_option("--lod", args->lod,
                     "auto: screen-space LOD chain; or a quoted list of reductions in % (\"50 60 70 80 90\")")
+        ->check(levelListCheck())
         ->capture_default_str();
     cmd->add_option("--pixel-error", args->pixelError, "Largest error on screen when a level is shown (px)")
+        ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    cmd->add_option("--fov", args->fov, "Vertical field of view of the simulator (degrees)")->capture_default_str();
-    cmd->add_option("--viewport", args->viewport, "Viewport height (px)")->capture_default_str();
+    cmd->add_option("--fov", args->fov, "Vertical field of view of the simulator (degrees)")
+        ->check(openRange(0.0, 180.0))
+        ->capture_default_str();
+    cmd->add_option("--viewport", args->viewport, "Viewport height (px)")->check(CLI::PositiveNumber)->capture_default_str();
     cmd->add_option("--distance-ratio", args->distanceRatio, "auto: ratio between consecutive level distances")
+        ->check(openRange(1.0, std::numeric_limits<double>::infinity()))
         ->capture_default_str();
     cmd->add_option("--proxy-pixels", args->proxyPixels, "auto: the box proxy serves below this height (px)")
+        ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     cmd->add_option("--cull-pixels", args->cullPixels, "auto: not drawn below this height (px); 0: never culled")
+        ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     cmd->add_option("--instances", args->instances,
                     "keep: a part the file places many times (USE, Inline) is simplified once and written as an "

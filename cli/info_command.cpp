@@ -2,6 +2,7 @@
 // LOD levels with their ranges.
 #include "cli_options.h"
 #include "commands.h"
+#include "input_losses.h"
 #include "mesh_files.h"
 #include "progress_bar.h"
 
@@ -85,6 +86,7 @@ void runInfo(const std::string& path)
     progress::enable(false);
     CoreMesh m;
     ImportSettings settings;
+    settings.allowPartial = true;  // shows what can be read; the losses are listed as warnings
     settings.keepInstances = true;
     vrml::Scene assembly;
     const LoadedMesh loaded = loadMesh(path, m, settings, &assembly);
@@ -99,8 +101,13 @@ void runInfo(const std::string& path)
                 box.min[2], box.max[0], box.max[1], box.max[2], box.Diag());
     if (loaded.format == InputFormat::OpenFlight)
         printFltLevels(path);
+    else if (loaded.kicadUnitApplied)
+        std::printf("units        %s, scaled to metres\n", loaded.unit.describe().c_str());
     else
         std::printf("units guess  %s\n", unitsGuess(box.Diag()));
+    if (!geometryLosses(loaded.findings).empty())
+        std::printf("incomplete   %zu finding(s) lost geometry (see the warnings)\n",
+                    geometryLosses(loaded.findings).size());
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 #include "openflight/flt_reader.h"
 #include "convert/lod_model_to_mesh.h"
 #include "convert/mesh_to_lod_model.h"
+#include "input_losses.h"
+#include "measure/hausdorff.h"
 #include "obj_reader.h"
 #include "output_file.h"
 #include "progress_bar.h"
@@ -67,14 +69,6 @@ void prepareForSimplifier(CoreMesh& m)
     vcg::tri::UpdateTopology<CoreMesh>::VertexFace(m);
 }
 
-void printImportWarnings(const vrml::Diagnostics& diagnostics)
-{
-    const auto& kept = diagnostics.kept();
-    for (std::size_t i = 0; i < kept.size() && i < 12; ++i)
-        std::fprintf(stderr, "cadlod: warning: %s: %s: %s\n", kept[i].where.c_str(), kept[i].kind.c_str(),
-                     kept[i].message.c_str());
-}
-
 int sceneToCoreMesh(vrml::Scene& scene, CoreMesh& m, const ImportSettings& settings)
 {
     mesh_io::SceneToMeshOptions toMesh;
@@ -83,20 +77,36 @@ int sceneToCoreMesh(vrml::Scene& scene, CoreMesh& m, const ImportSettings& setti
     return mesh_io::sceneToMesh(scene, m, toMesh, progress::callback);
 }
 
-LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& settings, vrml::Scene* assembly)
+vrml::ImportOptions vrmlOptions(const ImportSettings& settings, bool keepInstances)
 {
     vrml::ImportOptions options;
     options.unitScale = settings.unitScale;
+    options.detectKicadUnits = settings.unit.empty();  // --unit says what the file is in
+    options.kicadUnitScale = 0.001;                    // KiCad's millimetres to metres
+    options.upAxis = settings.yUpToZUp ? vrml::UpAxis::YUpToZUp : vrml::UpAxis::Keep;
     options.recomputeNormals = settings.recomputeNormals;
-    if (settings.keepInstances && assembly)
+    if (keepInstances)
         options.instances = vrml::Instances::Keep;
     options.progress = [](double f) { progress::report(int(60 * f), "Reading VRML"); };
-    vrml::ImportResult imported = vrml::importVrmlFile(path, options);
+    return options;
+}
+
+LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& settings, vrml::Scene* assembly)
+{
+    vrml::ImportResult imported =
+        vrml::importVrmlFile(path, vrmlOptions(settings, settings.keepInstances && assembly));
     if (!imported.ok())
         throw InputError(imported.error);
-    printImportWarnings(imported.scene.diagnostics);
+    refuseLosses(imported.scene.diagnostics, settings.allowPartial);
+    const auto& kept = imported.scene.diagnostics.kept();
+    for (std::size_t i = 0; i < kept.size() && i < 12; ++i)
+        std::fprintf(stderr, "cadlod: warning: %s\n", findingLine(kept[i]).c_str());
     LoadedMesh info;
     info.format = InputFormat::Vrml;
+    info.findings = imported.scene.diagnostics;
+    info.kicadHeader = imported.assumed.kicadHeader;
+    info.kicadUnitApplied = imported.assumed.kicadUnits;
+    info.unit = chooseUnit(settings.unit, info.kicadUnitApplied, settings.defaultUnit, settings.defaultUnitGiven);
     if (!imported.scene.assembly.empty()) {
         info.parts = imported.scene.assembly.geometries.size();
         info.placements = imported.scene.assembly.placementCount();
@@ -108,6 +118,16 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
     if (m.fn == 0)
         throw InputError(path + ": no triangles in the scene");
     return info;
+}
+
+// A VRML model whose size is implausible for its unit is reported when loaded.
+void checkModelSize(CoreMesh& m, LoadedMesh& info)
+{
+    const std::string warning = implausibleSizeWarning(liveDiagonal(m), info.unit);
+    if (warning.empty())
+        return;
+    std::fprintf(stderr, "cadlod: warning: %s\n", warning.c_str());
+    info.notes.push_back(warning);
 }
 
 // An OpenFlight file writes a vertex once per smooth fan where faces fold (cadlod's own
@@ -230,6 +250,8 @@ LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& 
     if (m.fn == 0)
         throw InputError(path + ": no triangles");
     prepareForSimplifier(m);
+    if (info.format == InputFormat::Vrml)
+        checkModelSize(m, info);
     return info;
 }
 

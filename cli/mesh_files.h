@@ -5,9 +5,12 @@
 #include "mesh/core_mesh.h"
 #include "openflight/flt_writer.h"
 #include "openflight/lod_model.h"
+#include "unit_choice.h"
+#include "vrml/diagnostics.h"
 #include "vrml/scene.h"
 
 #include <string>
+#include <vector>
 
 namespace cadlod::cli {
 
@@ -17,7 +20,12 @@ InputFormat formatOf(const std::string& path);
 const char* formatName(InputFormat format);
 
 struct ImportSettings {
-    double unitScale = 1.0;
+    double unitScale = 1.0;          // of `unit`, else of `defaultUnit`
+    std::string unit;                // --unit (empty: not given): wins over a KiCad header
+    std::string defaultUnit = "m";
+    bool defaultUnitGiven = false;
+    bool yUpToZUp = false;
+    bool allowPartial = false;       // accept a VRML input that lost geometry
     bool recomputeNormals = false;
     bool mergeVertices = true;
     float mergeTolerance = 0.0f;
@@ -31,10 +39,17 @@ struct LoadedMesh {
     std::size_t fltLevels = 0;       // OpenFlight: levels in the file
     flt::Units fltUnits = flt::Units::Meters;
     std::size_t placements = 0;      // kept instances: placements of the distinct parts
+    // VRML: the unit applied and why, KiCad's header, the importer's findings, and the
+    // command's own warnings about the model (an implausible size for its unit).
+    UnitChoice unit{"file units", 1.0, "--unit applies to VRML inputs only"};
+    bool kicadHeader = false, kicadUnitApplied = false;
+    vrml::Diagnostics findings;
+    std::vector<std::string> notes;
 };
 
 // Loads `path` into `m` (empty) ready for the simplifier (compact, VF adjacency, face
-// normals, bbox); throws InputError with the reader's message (file:line:col or offset).
+// normals, bbox); throws InputError with the reader's message (file:line:col or offset),
+// also for a VRML input that lost geometry unless settings.allowPartial.
 // With settings.keepInstances and `assembly`, a VRML file that shares geometry goes to
 // `assembly` (its parts not welded yet) and `m` stays empty.
 LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& settings,

@@ -1,5 +1,6 @@
 // cadlod report A B: what simplification did to A (faces, symmetric Hausdorff distance in
 // % of A's diagonal, compactness before and after); both Hausdorff sides run in parallel.
+#include "cli_errors.h"
 #include "cli_options.h"
 #include "commands.h"
 #include "mesh_files.h"
@@ -34,13 +35,27 @@ void printText(const SimplificationReport& r)
         std::printf("%s\n", line.c_str());
 }
 
+// The pair is measured only when the second may be a simplification of the first (the
+// rule the GUI's Simplification Report applies, measure/simplification_report.h).
+void refuseUnrelated(const ReportArgs& a, const CoreMesh& original, const CoreMesh& simplified,
+                     const LoadedMesh& first, const LoadedMesh& second)
+{
+    const std::string why = whyNotASimplification(liveVertexBox(original), liveVertexBox(simplified));
+    if (why.empty())
+        return;
+    const std::string units = " " + a.original + " was read in " + first.unit.describe() + ", " + a.simplified +
+                              " in " + second.unit.describe();
+    throw InputError(a.simplified + " cannot be a simplification of " + a.original + ": " + why + units);
+}
+
 void runReport(const ReportArgs& a)
 {
     limitThreads(a.threads);
     const ImportSettings importing = importSettings(a.import);
     CoreMesh original, simplified;
-    loadMesh(a.original, original, importing);
-    loadMesh(a.simplified, simplified, importing);
+    const LoadedMesh first = loadMesh(a.original, original, importing);
+    const LoadedMesh second = loadMesh(a.simplified, simplified, importing);
+    refuseUnrelated(a, original, simplified, first, second);
     const SimplificationReport r = compareWithOriginal(original, simplified, a.samples, nullptr,
                                                          runOnWorkers);
     if (a.json)

@@ -88,15 +88,17 @@ nlohmann::json comparisonJson(const SimplificationReport& r)
             {"compactnessAfter", compactnessJson(r.after)}};
 }
 
+bool writeJsonTo(const std::string& file, const nlohmann::json& report)
+{
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out << report.dump(2) << "\n";
+    out.close();
+    return bool(out);
+}
+
 void writeJsonFile(const std::string& path, const nlohmann::json& report)
 {
-    const std::string text = report.dump(2) + "\n";
-    writeAtomically(path, [&](const std::string& temporary) {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out << text;
-        out.close();
-        return bool(out);
-    });
+    writeAtomically(path, [&](const std::string& temporary) { return writeJsonTo(temporary, report); });
 }
 
 }  // namespace cadlod::cli

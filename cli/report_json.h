@@ -17,5 +17,7 @@ nlohmann::json comparisonJson(const SimplificationReport& r);
 
 // Writes `report` (indented) to `path` atomically; throws InputError.
 void writeJsonFile(const std::string& path, const nlohmann::json& report);
+// Writes `report` (indented) to `file` as it is (e.g. an OutputSet's temporary).
+bool writeJsonTo(const std::string& file, const nlohmann::json& report);
 
 }  // namespace cadlod::cli

@@ -2,6 +2,7 @@
 // or maximum error), written as PLY/OBJ/STL or a one-level .flt.
 #include "cli_errors.h"
 #include "cli_options.h"
+#include "input_losses.h"
 #include "commands.h"
 #include "mesh_files.h"
 #include "output_file.h"
@@ -46,7 +47,7 @@ void runSimplify(const SimplifyArgs& a)
     progress::enable(!a.common.quiet);
     limitThreads(a.common.threads);
     CoreMesh m;
-    loadMesh(a.input, m, importing);
+    const LoadedMesh loaded = loadMesh(a.input, m, importing);
     // 0 % asks to remove nothing: the mesh is written as loaded (a conversion), unless a
     // maximum error is what bounds the run.
     if (a.reductionGiven && a.reduction == 0 && a.maxError == 0) {
@@ -54,6 +55,8 @@ void runSimplify(const SimplifyArgs& a)
         progress::finish();
         if (!a.common.quiet)
             std::fprintf(stderr, "cadlod: %s: %d faces, written unsimplified (--reduction 0)\n", a.output.c_str(), m.fn);
+        if (!a.common.quiet)
+            printFindingsSummary(loaded);
         return;
     }
     const SimplifyStats stats = bestOfTrials(m, paramsOf(a), progress::callback, runOnWorkers);
@@ -77,6 +80,8 @@ void runSimplify(const SimplifyArgs& a)
     if (!a.common.quiet)
         for (const std::string& line : stats.relaxed)  // what gave way to reach the target
             std::fprintf(stderr, "cadlod: %s\n", line.c_str());
+    if (!a.common.quiet)
+        printFindingsSummary(loaded);
 }
 
 }  // namespace

@@ -36,26 +36,13 @@ bool sameLodSet(MeshModel& a, MeshModel& b)
     return hasLodLevel(a.cm) && hasLodLevel(b.cm) && lodLevelHandle(a.cm)().setId == lodLevelHandle(b.cm)().setId;
 }
 
-// Two meshes that cannot be a simplification of one another: bounding boxes that do not
-// overlap, or whose sizes differ by more than 2x. Empty when they may be.
+// Two meshes that cannot be a simplification of one another (the measure core's rule, as
+// `cadlod report` applies it). Empty when they may be.
 std::string unrelatedBecause(CMeshO& current, CMeshO& original)
 {
     vcg::tri::UpdateBounding<CMeshO>::Box(current);
     vcg::tri::UpdateBounding<CMeshO>::Box(original);
-    const auto& a = current.bbox;
-    const auto& b = original.bbox;
-    const double da = a.Diag(), db = b.Diag();
-    char why[256];
-    if (!a.Collide(b)) {
-        std::snprintf(why, sizeof why, "their bounding boxes do not overlap (centers %.4g apart, diagonals %.4g and %.4g)",
-                      double((a.Center() - b.Center()).Norm()), da, db);
-        return why;
-    }
-    if (da > 2 * db || db > 2 * da) {
-        std::snprintf(why, sizeof why, "their bounding-box diagonals differ more than 2x (%.4g and %.4g)", da, db);
-        return why;
-    }
-    return {};
+    return whyNotASimplification(original.bbox, current.bbox);
 }
 
 void logReport(MeshFilterInterface& plugin, const MeshModel& current, const MeshModel& original,

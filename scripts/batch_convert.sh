@@ -6,7 +6,8 @@
 # (PinHeader_1x01_P2.00mm_Vertical.wrl -> PinHeader_1x01_P2.00mm_Vertical.flt), with its
 # JSON report in OUT_DIR/reports/<name>.json and its log in OUT_DIR/logs/<name>.log. Two
 # inputs with the same <name> are a collision: both fail, neither is converted. An existing
-# output is kept (SKIP). One status line per file, a total, exit 1 if any file failed.
+# output is kept (SKIP). One status line per file (with its warning count; an input that lost
+# geometry fails, or is PARTIAL with --allow-partial), a total, exit 1 if any file failed.
 # Options:
 #   -j JOBS            jobs per machine (GNU parallel -j; default: one per core)
 #   -S SSHLOGIN        GNU parallel --sshlogin, repeatable (e.g. -S 8/node1 -S 8/node2 -S :);
@@ -17,13 +18,14 @@
 #   --resume-failed    also retry the failed ones
 #   -t SECONDS         per-file timeout (default 1800)
 #   --cadlod PATH      the cadlod executable (default: $CADLOD, cadlod on PATH, or build/cli/cadlod)
-# Default convert options: --unit mm (CAD exports); anything after -- replaces them.
+# Default convert options: --default-unit mm (CAD exports; a KiCad StepUp file says 0.1 inch
+# itself); anything after -- replaces them.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-usage() { sed -n '2,23p' "$0" >&2; exit 2; }
+usage() { sed -n '2,22p' "$0" >&2; exit 2; }
 
 jobs=100% timeout_s=1800 joblog="" resume=() sshlogins=() cadlod="${CADLOD:-}"
-positional=() convert_opts=(--unit mm)
+positional=() convert_opts=(--default-unit mm)
 while [ $# -gt 0 ]; do
   case "$1" in
     -j) jobs=$2; shift ;;
@@ -95,7 +97,10 @@ convert_one() {
     --force "${convert_opts[@]}" >"$log" 2>&1 || rc=$?
   ms=$(( ($(date +%s%N) - start) / 1000000 ))
   if [ $rc -eq 0 ] && [ -s "$flt" ]; then
-    echo "OK    $in -> $flt (${ms} ms; $(grep -m1 -o '[0-9]* levels' "$log" || true))"
+    local report="$out/reports/$name.json" warnings status=OK
+    warnings=$(grep -m1 -o '"warningCount": [0-9]*' "$report" | grep -o '[0-9]*$' || echo "?")
+    grep -q '"complete": false' "$report" && status=PARTIAL
+    echo "$status$(printf '%*s' $((6 - ${#status})) '')$in -> $flt (${ms} ms; $(grep -m1 -o '[0-9]* levels' "$log" || true); ${warnings} warning(s))"
     return 0
   fi
   local reason

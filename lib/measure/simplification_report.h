@@ -7,9 +7,12 @@
 #include "measure/hausdorff.h"
 #include "support/run_together.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cadlod {
@@ -60,6 +63,52 @@ SimplificationReport compareWithOriginal(MeshType& original, MeshType& simplifie
     r.before = summarizeCompactness(before);
     r.after = summarizeCompactness(after);
     return r;
+}
+
+// Why `result` cannot be a simplification of `original` (empty when it may be): bounding-box
+// diagonals more than 1.5x apart (a ratio near a unit conversion is named), boxes that do
+// not overlap, or whose common part is less than half the smaller one across. Boxes are
+// closed: a flat part and its flat simplification overlap.
+template <class S>
+std::string whyNotASimplification(const vcg::Box3<S>& original, const vcg::Box3<S>& result)
+{
+    constexpr double kSizeRatio = 1.5, kLeastOverlap = 0.5;
+    const double da = double(original.Diag()), db = double(result.Diag());
+    char why[320];
+    const double ratio = std::max(da, db) / std::max(std::min(da, db), 1e-300);
+    if (ratio > kSizeRatio) {
+        static const std::pair<double, const char*> kUnits[] = {
+            {1000, "mm and m"}, {100, "cm and m"}, {10, "mm and cm"}, {25.4, "mm and in"},
+            {2.54, "cm and in, or 0.1 in and mm"}, {39.37, "in and m"}, {304.8, "mm and ft"}};
+        std::string unit = "another model, or a different unit?";
+        for (const auto& [factor, names] : kUnits)
+            if (std::abs(ratio / factor - 1.0) < 0.1)
+                unit = std::string("a different unit (") + names + ")?";
+        std::snprintf(why, sizeof why, "the result is %.*fx %s (bounding-box diagonals %.4g and %.4g): %s",
+                      ratio < 10 ? 1 : 0, ratio, db < da ? "smaller" : "larger", da, db, unit.c_str());
+        return why;
+    }
+    double common2 = 0;
+    for (int i = 0; i < 3; ++i) {
+        const double overlap = double(std::min(original.max[i], result.max[i])) -
+                               double(std::max(original.min[i], result.min[i]));
+        if (overlap < 0 || original.IsNull() || result.IsNull()) {
+            std::snprintf(why, sizeof why,
+                          "their bounding boxes do not overlap (centers %.4g apart, diagonals %.4g and %.4g): "
+                          "moved, or a different unit?",
+                          double((original.Center() - result.Center()).Norm()), da, db);
+            return why;
+        }
+        common2 += overlap * overlap;
+    }
+    if (std::sqrt(common2) < kLeastOverlap * std::min(da, db)) {
+        std::snprintf(why, sizeof why,
+                      "their bounding boxes barely overlap (the common part is %.0f%% of the smaller one across): "
+                      "moved, or a different unit?",
+                      100.0 * std::sqrt(common2) / std::max(std::min(da, db), 1e-300));
+        return why;
+    }
+    return {};
 }
 
 // One line per tenth: "0.3-0.4 | before  12.5% ######     | after  30.1% ###############".

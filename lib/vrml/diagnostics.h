@@ -2,6 +2,8 @@
 // with file:line:col, summarised by kind so a log stays readable on huge files.
 #pragma once
 
+#include <algorithm>
+#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
@@ -13,6 +15,18 @@ struct Diagnostic {
     std::string where;    // file:line:col
     std::string message;
 };
+
+// True for the kinds of finding after which part of the model is missing: the rest of a
+// file (syntax error), a whole file (Inline), a subtree or a node. The others (a face
+// skipped, an attribute or a texture replaced) leave the model whole but for that face.
+inline bool losesGeometry(const std::string& kind)
+{
+    static const char* const kLosing[] = {"syntax error",  "missing inline",     "recursive inline",
+                                          "bad inline",    "inline too deep",    "undefined USE",
+                                          "unknown node",  "too deep",           "missing EXTERNPROTO",
+                                          "unsupported geometry", "bad ElevationGrid"};
+    return std::find(std::begin(kLosing), std::end(kLosing), kind) != std::end(kLosing);
+}
 
 class Diagnostics {
 public:

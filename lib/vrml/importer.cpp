@@ -177,7 +177,8 @@ public:
             text = source.text;
         }
         result_.scene.stats.bytesRead += text.size();
-        const bool kicad = options_.detectKicadUnits && isKicadStepUpExport(text);  // before the text is freed
+        result_.assumed.kicadHeader = isKicadStepUpExport(text);  // before the text is freed
+        const bool kicad = options_.detectKicadUnits && result_.assumed.kicadHeader;
         ParseOptions parse = parseOptions(fileName);
         if (options_.progress)
             parse.progress = [this](size_t done, size_t total) {
@@ -214,7 +215,8 @@ private:
         a.upAxis = options_.upAxis;
         a.kicadUnits = kicad;
         a.fileScale = a.kicadUnits ? 2.54 : 1.0;
-        const double s = options_.unitScale * a.fileScale;
+        const double unit = a.kicadUnits && options_.kicadUnitScale > 0 ? options_.kicadUnitScale : options_.unitScale;
+        const double s = unit * a.fileScale;
         const Mat4 scale = Mat4::scale({s, s, s});
         ctx_.frame = scale;
         ctx_.frameInverse = Mat4::scale({1 / s, 1 / s, 1 / s});
@@ -418,7 +420,9 @@ std::string ImportAssumptions::describe(double unitScale) const
     std::snprintf(text, sizeof text, "%s; %s",
                   upAxis == UpAxis::YUpToZUp ? "up axis: +Y in the file, rotated to +Z (VRML convention)"
                                              : "up axis: kept as in the file (+Z for CAD exports)",
-                  kicadUnits ? "units: KiCad StepUp header found, file in 0.1 inch, scaled by 2.54 to mm" : "units: as in the file");
+                  kicadUnits    ? "units: KiCad StepUp header found, file in 0.1 inch, scaled by 2.54 to mm"
+                  : kicadHeader ? "units: as in the file (KiCad StepUp header found, its 0.1 inch not applied)"
+                                : "units: as in the file");
     std::string out = text;
     if (unitScale != 1.0) {
         std::snprintf(text, sizeof text, ", then unit scale %g", unitScale);

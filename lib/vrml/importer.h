@@ -25,8 +25,12 @@ struct ImportOptions {
     double unitScale = 1.0;            // applied to the world transform (e.g. 0.001: mm -> m)
     UpAxis upAxis = UpAxis::Keep;      // YUpToZUp: rotate +90 degrees about X, (x, y, z) -> (x, -z, y)
     // KiCad's 3D models (header comment "#kicad StepUp wrl exported") are in 0.1 inch:
-    // scale them by 2.54 to millimetres (before unitScale) when the header says so.
+    // scale them by 2.54 to millimetres (before unitScale) when the header says so. Off:
+    // the header is still looked for (ImportAssumptions::kicadHeader), never applied.
     bool detectKicadUnits = true;
+    // The scale applied to a KiCad file's millimetres instead of unitScale (e.g. 0.001 to
+    // metres), so a caller need not know beforehand which files are KiCad's; 0: unitScale.
+    double kicadUnitScale = 0.0;
     bool recomputeNormals = false;     // ignore file normals, use creaseAngle
     Instances instances = Instances::Expand;
     // Keep: the most placements the assembly may expand to (a file that USEs groups of USEs
@@ -46,7 +50,8 @@ struct ImportOptions {
 
 // What the importer assumed about the file's axes and units, for the log.
 struct ImportAssumptions {
-    bool kicadUnits = false;   // the KiCad StepUp header was found and 2.54 applied
+    bool kicadHeader = false;  // the KiCad StepUp header was found
+    bool kicadUnits = false;   // ... and 2.54 applied (detectKicadUnits)
     double fileScale = 1.0;    // 2.54 for KiCad, else 1 (before unitScale)
     UpAxis upAxis = UpAxis::Keep;
     std::string describe(double unitScale) const;  // one sentence

@@ -61,4 +61,21 @@ if "$src/scripts/batch_convert.sh" --cadlod "$cadlod" "$work/clash_out" "$work/c
 fi
 grep -q 'collision' "$work/clash.txt" || fail "no collision message"
 [ ! -e "$work/clash_out/board.flt" ] || fail "a colliding input was converted"
+# 5. An input that lost geometry (cut short) fails the batch with its place in the file; with
+#    --allow-partial it is converted and marked PARTIAL. Every OK line counts the warnings.
+mkdir -p "$work/broken"
+ln -s "$demo" "$work/broken/whole.wrl.gz"
+zcat "$demo" > "$work/whole.wrl"
+head -c $(( $(wc -c < "$work/whole.wrl") / 2 )) "$work/whole.wrl" > "$work/broken/cut.wrl"  # half of its parts
+if "$src/scripts/batch_convert.sh" --cadlod "$cadlod" "$work/broken_out" "$work/broken" -- --unit mm --lod 90 \
+    > "$work/broken.txt" 2>&1; then
+  cat "$work/broken.txt"; fail "a truncated input did not fail the batch"
+fi
+grep -q '^FAIL  .*cut.wrl (exit 1: .*cut.wrl:[0-9]*:[0-9]*: syntax error' "$work/broken.txt" \
+  || { cat "$work/broken.txt"; fail "no FAIL line with the place of the loss"; }
+grep -q '^OK    .*whole.wrl.gz .*; 0 warning(s))' "$work/broken.txt" || { cat "$work/broken.txt"; fail "no warning count"; }
+[ ! -e "$work/broken_out/cut.flt" ] || fail "a truncated input was converted"
+"$src/scripts/batch_convert.sh" --cadlod "$cadlod" "$work/partial_out" "$work/broken" -- --unit mm --lod 90 \
+  --allow-partial > "$work/partial.txt" 2>&1 || { cat "$work/partial.txt"; fail "--allow-partial failed the batch"; }
+grep -q '^PARTIAL .*cut.wrl .*; 1 warning(s))' "$work/partial.txt" || { cat "$work/partial.txt"; fail "no PARTIAL line"; }
 echo "batch resume test passed"

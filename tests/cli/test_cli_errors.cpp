@@ -57,6 +57,28 @@ TEST(CliErrors, UsageErrorsExitWithTwo)
     EXPECT_EQ(runCadlod({"--help"}).exitCode, 0);
 }
 
+// A bad option value is a usage error found before the input is read (here it does not
+// exist, and is never blamed).
+TEST(CliErrors, BadOptionValuesAreUsageErrorsFoundBeforeReading)
+{
+    const std::string dir = freshDirectory("bad_values");
+    const std::string none = dir + "/none.wrl";
+    for (const std::vector<std::string>& bad :
+         {std::vector<std::string>{"--lod", "50 abc"}, {"--lod", "90 50"}, {"--lod", "120"}, {"--pixel-error", "0"},
+          {"--fov", "180"}, {"--viewport", "-5"}, {"--distance-ratio", "1"}, {"--unit", "-2"},
+          {"--default-unit", "furlong"}}) {
+        std::vector<std::string> args{"convert", none, "-o", dir + "/x.flt"};
+        args.insert(args.end(), bad.begin(), bad.end());
+        const CliRun run = runCadlod(args);
+        EXPECT_EQ(run.exitCode, 2) << bad[0] << " " << bad[1] << ": " << run.stderrText;
+        EXPECT_NE(run.stderrText.find(bad[0]), std::string::npos) << run.stderrText;
+        EXPECT_EQ(run.stderrText.find("none.wrl"), std::string::npos) << run.stderrText;
+    }
+    const CliRun lod = runCadlod({"convert", none, "-o", dir + "/x.flt", "--lod", "50 abc"});
+    EXPECT_NE(lod.stderrText.find("'abc' is not a number"), std::string::npos) << lod.stderrText;
+    EXPECT_FALSE(fileExists(dir + "/x.flt"));
+}
+
 // --version needs no subcommand: it prints the project's version and exits 0.
 TEST(CliErrors, VersionPrintsTheVersion)
 {

@@ -9,6 +9,7 @@
 
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -38,6 +39,49 @@ TEST(CliOutputs, RefusesToOverwriteWithoutForce)
     EXPECT_EQ(forced.exitCode, 0) << forced.stderrText;
     EXPECT_TRUE(readsBack(out));
     EXPECT_EQ(filesIn(dir).size(), 1u);  // no temporary file left behind
+}
+
+// The report on the model's own path is a usage error, found before any work; the model
+// is not replaced by the JSON.
+TEST(CliOutputs, ReportOnTheOutputsPathIsAUsageError)
+{
+    const std::string dir = freshDirectory("report_same");
+    const CliRun run = runCadlod({"convert", kDemo, "-o", dir + "/d.flt", "--report", dir + "/./d.flt", "--unit",
+                                  "mm", "--lod", "90"});
+    EXPECT_EQ(run.exitCode, 2) << run.stderrText;
+    EXPECT_NE(run.stderrText.find("is the same file as -o"), std::string::npos) << run.stderrText;
+    EXPECT_TRUE(filesIn(dir).empty());
+}
+
+// Both outputs or neither: a report that cannot be written leaves no model behind, and
+// every output path is checked before the input is read (here it does not even exist).
+TEST(CliOutputs, OutputPathsAreCheckedBeforeReadingAndWrittenTogether)
+{
+    const std::string dir = freshDirectory("outputs_together");
+    const CliRun report = runCadlod({"convert", kDemo, "-o", dir + "/d.flt", "--report", dir + "/no/such/r.json",
+                                     "--unit", "mm", "--lod", "90"});
+    EXPECT_EQ(report.exitCode, 1) << report.stderrText;
+    EXPECT_NE(report.stderrText.find("r.json: the folder"), std::string::npos) << report.stderrText;
+    EXPECT_TRUE(filesIn(dir).empty());
+    const CliRun rerun = runCadlod({"convert", kDemo, "-o", dir + "/d.flt", "--report", dir + "/r.json", "--unit",
+                                    "mm", "--lod", "90", "-q"});
+    EXPECT_EQ(rerun.exitCode, 0) << rerun.stderrText;
+    EXPECT_EQ(filesIn(dir).size(), 2u);
+
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"convert", dir + "/none.wrl", "-o", dir + "/no/x.flt"},
+          std::vector<std::string>{"convert", dir + "/none.wrl", "-o", dir + "/x.flt", "--report", dir + "/no/r.json"},
+          std::vector<std::string>{"simplify", dir + "/none.wrl", "-o", dir + "/no/x.ply"}}) {
+        const CliRun early = runCadlod(args);
+        EXPECT_EQ(early.exitCode, 1) << early.stderrText;
+        EXPECT_NE(early.stderrText.find("the folder " + dir + "/no does not exist"), std::string::npos)
+            << early.stderrText;
+        EXPECT_EQ(early.stderrText.find("none.wrl"), std::string::npos) << early.stderrText;  // not read
+    }
+    std::filesystem::create_directory(dir + "/sub.flt");
+    const CliRun folder = runCadlod({"convert", dir + "/none.wrl", "-o", dir + "/sub.flt", "--force"});
+    EXPECT_EQ(folder.exitCode, 2) << folder.stderrText;
+    EXPECT_NE(folder.stderrText.find("is a folder"), std::string::npos) << folder.stderrText;
 }
 
 // Starts cadlod with stderr on a pipe (plain progress lines) and SIGKILLs it as soon as it

@@ -59,3 +59,27 @@ TEST(SimplificationReport, CoarserSphereIsFurtherAndCountsAddUp)
     EXPECT_EQ(histogramLines(r).size(), 10u);
     EXPECT_NE(histogramLines(r)[9].find("0.9-1.0 | before"), std::string::npos) << histogramLines(r)[9];
 }
+
+// The rule by which `cadlod report` and the GUI's Simplification Report refuse a pair:
+// sizes more than 1.5x apart (a unit ratio named), boxes apart or barely overlapping.
+TEST(SimplificationReport, PairsThatCannotBeASimplificationAreNamed)
+{
+    using Box = vcg::Box3d;
+    const Box part(vcg::Point3d(0, 0, 0), vcg::Point3d(180, 100, 40));
+    EXPECT_EQ(whyNotASimplification(part, part), "");
+    const Box slightlySmaller(vcg::Point3d(1, 1, 1), vcg::Point3d(170, 95, 38));
+    EXPECT_EQ(whyNotASimplification(part, slightlySmaller), "");
+    const Box inMetres(vcg::Point3d(0, 0, 0), vcg::Point3d(0.18, 0.1, 0.04));
+    const std::string metres = whyNotASimplification(part, inMetres);
+    EXPECT_NE(metres.find("the result is 1000x smaller"), std::string::npos) << metres;
+    EXPECT_NE(metres.find("a different unit (mm and m)?"), std::string::npos) << metres;
+    const Box apart(vcg::Point3d(500, 0, 0), vcg::Point3d(680, 100, 40));
+    EXPECT_EQ(whyNotASimplification(part, apart).rfind("their bounding boxes do not overlap", 0), 0u);
+    const Box corner(vcg::Point3d(170, 90, 30), vcg::Point3d(350, 190, 70));
+    EXPECT_NE(whyNotASimplification(part, corner).find("barely overlap"), std::string::npos);
+    const Box twiceAsLarge(vcg::Point3d(0, 0, 0), vcg::Point3d(360, 200, 80));
+    EXPECT_NE(whyNotASimplification(part, twiceAsLarge).find("2.0x larger"), std::string::npos);
+    // A flat board and its flat simplification (zero thickness) do overlap.
+    const Box board(vcg::Point3d(0, 0, 0), vcg::Point3d(100, 80, 0));
+    EXPECT_EQ(whyNotASimplification(board, board), "");
+}

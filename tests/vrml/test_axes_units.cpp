@@ -84,7 +84,28 @@ TEST(AxesAndUnits, KicadStepUpFilesAreScaledFromTenthsOfAnInchToMillimetres)
                                             "part.wrl", off);
     ASSERT_TRUE(raw.ok());
     EXPECT_FALSE(raw.assumed.kicadUnits);
+    EXPECT_TRUE(raw.assumed.kicadHeader);  // found, not applied: the log can say so
+    EXPECT_NE(raw.assumed.describe(1.0).find("its 0.1 inch not applied"), std::string::npos)
+        << raw.assumed.describe(1.0);
     expectPoint(raw.scene.parts[0], 1, 0.394, 0, 0);
+}
+
+// kicadUnitScale replaces unitScale for KiCad files only: a caller scaling everything to
+// metres need not know beforehand which files are KiCad's.
+TEST(AxesAndUnits, KicadUnitScaleAppliesToKicadFilesOnly)
+{
+    const std::string body = "Shape { geometry IndexedFaceSet { coord Coordinate { point "
+                             "[ 0 0 0, 0.394 0 0, 0 0.394 0 ] } coordIndex [ 0 1 2 ] } }\n";
+    ImportOptions o;
+    o.unitScale = 1.0;
+    o.kicadUnitScale = 0.001;
+    const ImportResult k = importVrmlText(kicad(body), "part.wrl", o);
+    ASSERT_TRUE(k.ok()) << k.error;
+    expectPoint(k.scene.parts[0], 1, 0.394 * 2.54 * 0.001, 0, 0);
+    const ImportResult plain = importVrmlText("#VRML V2.0 utf8\n" + body, "plain.wrl", o);
+    ASSERT_TRUE(plain.ok()) << plain.error;
+    EXPECT_FALSE(plain.assumed.kicadHeader);
+    expectPoint(plain.scene.parts[0], 1, 0.394, 0, 0);
 }
 
 // The header must be KiCad's own comment at the top, not the words anywhere in the file.
