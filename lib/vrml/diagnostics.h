@@ -24,7 +24,7 @@ inline bool losesGeometry(const std::string& kind)
     static const char* const kLosing[] = {"syntax error",  "missing inline",     "recursive inline",
                                           "bad inline",    "inline too deep",    "undefined USE",
                                           "unknown node",  "too deep",           "missing EXTERNPROTO",
-                                          "unsupported geometry", "bad ElevationGrid"};
+                                          "unsupported geometry", "bad ElevationGrid", "recursive instance"};
     return std::find(std::begin(kLosing), std::end(kLosing), kind) != std::end(kLosing);
 }
 
