@@ -100,7 +100,6 @@ std::vector<Placement> flattenPlacements(const Assembly& assembly, const std::st
         for (const ChildPlacement& c : geometry.children) place(c.geometry, matrix * c.relative, joined(path, c.name));
     };
     place(0, Mat4::identity(), "");
-    if (!out.empty() && out.front().geometry == 0 && out.front().path.empty()) out.front().path = rootName;
     for (Placement& p : out)
         if (p.path.empty()) p.path = rootName;
     makePathsUnique(out);

@@ -238,8 +238,9 @@ private:
         ctx_.scopes.clear();
         if (ctx_.stopped()) return;
         const Assembly& assembly = result_.scene.assembly;
-        if (assembly.placementCount() > options_.maxPlacements) {
-            ctx_.error = fileName + ": the assembly places " + std::to_string(assembly.placementCount()) +
+        const uint64_t placements = assembly.placementCount();
+        if (placements > options_.maxPlacements) {
+            ctx_.error = fileName + ": the assembly places " + std::to_string(placements) +
                          " parts, more than the limit of " + std::to_string(options_.maxPlacements);
             return;
         }
