@@ -92,14 +92,16 @@ PartChain convertPart(vrml::Geometry& geometry, const ImportSettings& settings, 
 
 }  // namespace
 
-AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& rootName, const ImportSettings& settings,
+AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelName, const ImportSettings& settings,
                                    const BuildChain& buildChain)
 {
-    const std::vector<vrml::Placement> placements = vrml::flattenPlacements(scene.assembly, rootName);
+    // What no shared node holds is placed under the input file's name.
+    const std::vector<vrml::Placement> placements =
+        vrml::flattenPlacements(scene.assembly, scene.assembly.empty() ? modelName : scene.assembly.geometries[0].name);
     std::map<std::size_t, std::size_t> definitionOf;
     const std::vector<std::size_t> geometries = placedGeometries(placements, definitionOf);
     AssemblyConversion out;
-    out.model.name = rootName;
+    out.model.name = modelName;
     out.model.definitions.resize(geometries.size());
     std::size_t done = 0, total = 0;
     for (std::size_t g : geometries)

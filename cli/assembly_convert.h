@@ -33,8 +33,9 @@ struct AssemblyConversion {
     std::size_t skippedFaces = 0;  // degenerate faces the level conversion dropped
 };
 
-// Throws InputError when a part cannot be converted (its name in the message).
-AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& rootName, const ImportSettings& settings,
+// `modelName` names the model (its header and root group). Throws InputError when a part
+// cannot be converted (its name in the message).
+AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelName, const ImportSettings& settings,
                                    const BuildChain& buildChain);
 
 }  // namespace cadlod::cli
