@@ -133,16 +133,28 @@ void writeFlt(OutputSet& outputs, const std::string& path, const flt::LodModel& 
     outputs.write(path, [&](const std::string& temporary) { return writeBytesTo(temporary, bytes); });
 }
 
+// One format for every length of the summary: four significant digits, never an exponent
+// beside a fixed-point number.
+std::string lengthText(double metres)
+{
+    char text[32];
+    if (metres != 0 && std::fabs(metres) < 1)
+        std::snprintf(text, sizeof text, "%.4g mm", metres * 1000);
+    else
+        std::snprintf(text, sizeof text, "%.4g m", metres);
+    return text;
+}
+
 void printSummary(const LodSetResult& r, const flt::WriteStats& written, const std::string& output,
                   const LoadedMesh& loaded)
 {
     std::fprintf(stderr, "cadlod: %s: %zu levels, %zu triangles, %zu bytes (model size %.6g)\n", output.c_str(),
                  r.levels.size(), written.triangles, written.bytes, r.modelSize);
-    std::fprintf(stderr, "level  triangles  hausdorff max (%% diag)  switch out..in\n");
+    std::fprintf(stderr, "level  triangles  hausdorff max     (%% diag)  switch out .. in\n");
     for (const LodLevel& l : r.levels)
-        std::fprintf(stderr, "%5d  %9d  %.6g (%.4f%%)  %.6g..%s\n", l.level, l.faces, l.hausdorffMax,
-                     r.modelSize > 0 ? 100.0 * l.hausdorffMax / r.modelSize : 0.0, l.switchOut,
-                     l.switchIn >= kNeverCulled ? "never" : std::to_string(l.switchIn).c_str());
+        std::fprintf(stderr, "%5d  %9d  %-16s  %8.4f%%  %s .. %s\n", l.level, l.faces, lengthText(l.hausdorffMax).c_str(),
+                     r.modelSize > 0 ? 100.0 * l.hausdorffMax / r.modelSize : 0.0, lengthText(l.switchOut).c_str(),
+                     l.switchIn >= kNeverCulled ? "never" : lengthText(l.switchIn).c_str());
     for (const std::string& w : r.warnings)
         std::fprintf(stderr, "cadlod: note: %s\n", w.c_str());
     if (loaded.format == InputFormat::Vrml)

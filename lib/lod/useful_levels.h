@@ -31,8 +31,9 @@ void keepUsefulLevels(LodSetResult& r, std::vector<MeshType*>& meshes)
     for (std::size_t k = 0; k < r.levels.size(); ++k) {
         if (!selection.keep[k]) {
             kept.droppedLevels.push_back(int(k));
-            kept.warnings.push_back("level " + std::to_string(k) + " (" + std::to_string(r.levels[k].faces) +
-                                    " faces) dropped: " + selection.why[k]);
+            // Named by where it stood among the kept levels: their numbers are the ones the user sees.
+            kept.warnings.push_back("a candidate level after level " + std::to_string(kept.levels.empty() ? 0 : kept.levels.size() - 1) + " (" +
+                                    std::to_string(r.levels[k].faces) + " faces) dropped: " + selection.why[k]);
             if (k > 0 && k - 1 < r.steps.size())
                 for (const std::string& line : r.steps[k - 1].relaxed)
                     untold.push_back("(dropped level " + std::to_string(k) + ") " + line);

@@ -242,6 +242,9 @@ TEST(LodBuilder, ADroppedLevelsLogLinesGoToTheNextKeptLevel)
     detail::keepUsefulLevels(r, pointers);
     ASSERT_EQ(r.levels.size(), 2u);
     EXPECT_EQ(r.droppedLevels, std::vector<int>{1});
+    // The note names the dropped candidate by the kept levels' numbers, the ones a user sees.
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_EQ(r.warnings[0].rfind("a candidate level after level 0 (60 faces) dropped: ", 0), 0u) << r.warnings[0];
     ASSERT_EQ(r.steps.size(), 1u);
     EXPECT_EQ(r.steps[0].relaxed, (std::vector<std::string>{"(dropped level 1) gave way for level 1", "gave way for level 2"}));
     EXPECT_EQ(pointers, (std::vector<TestMesh*>{&meshes[0], &meshes[2]}));
