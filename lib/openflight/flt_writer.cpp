@@ -110,14 +110,10 @@ bool writeOpenFlight(const LodModel& model, const WriteOptions& options, std::ve
         error = "the vertex palette would exceed 4 GiB; use Mesh records";
         return false;
     }
-    WriteStats local;
-    WriteStats& s = stats ? *stats : local;
-    s = WriteStats{};
-    out.clear();
-    ByteWriter w(out);
-    ModelWriter(model, options, w, s).write();
-    s.bytes = out.size();
-    return true;
+    return writeDatabase(out, stats, [&](ByteWriter& w, WriteStats& s) {
+        ModelWriter(model, options, w, s).write();
+        return true;
+    });
 }
 
 bool writeOpenFlightFile(const std::string& path, const LodModel& model, const WriteOptions& options,

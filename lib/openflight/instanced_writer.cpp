@@ -147,15 +147,9 @@ bool writeInstancedOpenFlight(const InstancedModel& model, const WriteOptions& o
 {
     if (!validate(model, options, error))
         return false;
-    InstancedWriteStats local;
-    InstancedWriteStats& s = stats ? *stats : local;
-    s = InstancedWriteStats{};
-    out.clear();
-    ByteWriter w(out);
-    if (!InstancedWriter(model, options, w, s).write(error))
-        return false;
-    s.bytes = out.size();
-    return true;
+    return writeDatabase(out, stats, [&](ByteWriter& w, InstancedWriteStats& s) {
+        return InstancedWriter(model, options, w, s).write(error);
+    });
 }
 
 bool writeInstancedOpenFlightFile(const std::string& path, const InstancedModel& model, const WriteOptions& options,

@@ -16,6 +16,22 @@ void writeDatabaseHead(ByteWriter& w, const std::string& name, Units units);
 void openRootGroup(ByteWriter& w, const std::string& name);
 void closeRootGroup(ByteWriter& w);
 
+// Clears `out` and `stats` (or a local one when null), runs `write(w, stats)` into `out` and
+// records the bytes written: what every writer of a whole database does around its records.
+template <class Stats, class Write>
+bool writeDatabase(std::vector<std::uint8_t>& out, Stats* stats, Write&& write)
+{
+    Stats local;
+    Stats& s = stats ? *stats : local;
+    s = Stats{};
+    out.clear();
+    ByteWriter w(out);
+    if (!write(w, s))
+        return false;
+    s.bytes = out.size();
+    return true;
+}
+
 // `write(bytes, error)` makes the database; it goes to `path` through a temporary file
 // renamed into place (atomic_file.h), so an interrupted write never leaves a truncated .flt.
 bool writeDatabaseFile(const std::string& path,

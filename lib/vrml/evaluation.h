@@ -95,6 +95,9 @@ struct EvalContext {
     std::string error;  // fatal: the scene would exceed the triangle limit
 };
 
+// What tells a shared node from every other: the node itself (one parse per file).
+std::string sharedNodeKey(const Node& node);
+
 void evaluateVrml97(const std::vector<NodePtr>& roots, const Mat4& world, const Owner& owner, const std::string& path,
                     EvalContext& ctx);
 void evaluateVrml10(const std::vector<NodePtr>& roots, const Mat4& world, const Owner& owner, const std::string& path,

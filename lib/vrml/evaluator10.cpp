@@ -98,12 +98,11 @@ private:
     static std::string instanceKey(const Node& node, const State& state)
     {
         char key[200];
-        std::snprintf(key, sizeof key, "node %p %p %p %p %p %p %s %s %d %d %g", static_cast<const void*>(&node),
-                      static_cast<const void*>(state.coords), static_cast<const void*>(state.normals),
+        std::snprintf(key, sizeof key, " %p %p %p %p %p %s %s %d %d %g", static_cast<const void*>(state.coords), static_cast<const void*>(state.normals),
                       static_cast<const void*>(state.texCoords), static_cast<const void*>(state.diffuse),
                       static_cast<const void*>(state.transparency), state.normalBinding.c_str(),
                       state.materialBinding.c_str(), int(state.ccw), int(state.convex), double(state.creaseAngle));
-        return key + std::string(" ") + state.texture;
+        return sharedNodeKey(node) + key + " " + state.texture;
     }
 
     void place(const NodePtr& node, const State& state, int depth)

@@ -5,7 +5,6 @@
 #include "vrml/transform.h"
 #include "vrml/traversal.h"
 
-#include <cstdio>
 #include <set>
 
 namespace cadlod::vrml {
@@ -70,9 +69,9 @@ public:
         }
         if (isInstance(*node)) {
             if (!ctx_.keepsInstances()) {
-                ctx_.noteExpandedUse(instanceKey(*node));
+                ctx_.noteExpandedUse(sharedNodeKey(*node));
             } else {
-                ctx_.placeInstance(instanceKey(*node), node->defName, world, node->where,
+                ctx_.placeInstance(sharedNodeKey(*node), node->defName, world, node->where,
                                    [&] { evaluate(node, ctx_.frame, Owner{}, node->defName, depth); });
                 return;
             }
@@ -89,13 +88,6 @@ private:
         const std::string& t = n.type;
         return n.useCount > 0 && (t == "Transform" || t == "CADPart" || isGroupNode97(t) || t == "Switch" ||
                                   t == "LOD" || t == "Shape");
-    }
-
-    static std::string instanceKey(const Node& n)
-    {
-        char key[32];
-        std::snprintf(key, sizeof key, "node %p", static_cast<const void*>(&n));
-        return key;
     }
 
     void evaluate(const NodePtr& node, const Mat4& world, const Owner& owner, const std::string& path, int depth)

@@ -31,6 +31,13 @@ Part& EvalContext::part(const Owner& owner, const std::array<float, 4>& color, c
     return p;
 }
 
+std::string sharedNodeKey(const Node& node)
+{
+    char key[32];
+    std::snprintf(key, sizeof key, "node %p", static_cast<const void*>(&node));
+    return key;
+}
+
 Owner EvalContext::shapeOwner(const Owner& owner, const std::string& path)
 {
     if (owner.id >= 0) return owner;
