@@ -4,6 +4,7 @@
 #include "progress_bar.h"
 
 #include "lod/lod_chain.h"
+#include "lod/nearest_point.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,36 +33,58 @@ std::vector<std::size_t> placedGeometries(const std::vector<vrml::Placement>& pl
     return order;
 }
 
-double radiusAbout(const flt::Level& level)
+// How far each level's vertices reach from its centre.
+std::vector<double> reachOf(const std::vector<flt::Level>& levels)
 {
-    double r2 = 0;
-    for (const flt::Part& part : level.parts)
-        for (const flt::Vec3d& p : part.positions) {
-            const double dx = p[0] - level.center[0], dy = p[1] - level.center[1], dz = p[2] - level.center[2];
-            r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
-        }
-    return std::sqrt(r2);
+    std::vector<double> reach;
+    for (const flt::Level& level : levels) {
+        double r2 = 0;
+        for (const flt::Part& part : level.parts)
+            for (const flt::Vec3d& p : part.positions) {
+                const double dx = p[0] - level.center[0], dy = p[1] - level.center[1], dz = p[2] - level.center[2];
+                r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
+            }
+        reach.push_back(std::sqrt(r2));
+    }
+    return reach;
 }
 
-// A part's LOD node picks its level by the eye's distance to the part's centre. Pushed out
-// by the part's radius, every switch keeps its promise at the part's nearest point too: a
-// viewer beside a long part is nearer to its end than to its centre.
+// Keeps the `kept` levels of a chain result, and what it says of each.
+void keepLevels(LodSetResult& result, const std::vector<std::size_t>& kept)
+{
+    const LodSetResult all = result;
+    result.levels.clear();
+    result.compactness.clear();
+    result.distance.clear();
+    result.steps.clear();
+    for (std::size_t k : kept) {
+        result.levels.push_back(all.levels[k]);
+        if (all.compactness.size() == all.levels.size())
+            result.compactness.push_back(all.compactness[k]);
+        if (all.distance.size() == all.levels.size())
+            result.distance.push_back(all.distance[k]);
+        if (k > 0 && all.steps.size() + 1 == all.levels.size())
+            result.steps.push_back(all.steps[k - 1]);
+    }
+}
+
+// A part's LOD node picks its level by the eye's distance to the part's centre; moved out
+// as nearest_point.h says, every switch keeps its promise at the part's nearest point too.
 void holdAtNearestPoint(std::vector<flt::Level>& levels, LodSetResult& result)
 {
     if (levels.empty())
         return;
-    const double radius = radiusAbout(levels.front());
-    auto shift = [radius](double& d) {
-        if (d > 0 && d < kNeverCulled)
-            d += radius;
-    };
-    for (flt::Level& l : levels) {
-        shift(l.switchIn);
-        shift(l.switchOut);
-    }
-    for (LodLevel& l : result.levels) {
-        shift(l.switchIn);
-        shift(l.switchOut);
+    const std::vector<double> reach = reachOf(levels);
+    const std::vector<std::size_t> kept = cadlod::holdAtNearestPoint(levels, reach);
+    if (result.levels.size() != reach.size())
+        return;
+    std::vector<LodLevel> ranges = result.levels;
+    cadlod::holdAtNearestPoint(ranges, reach);
+    keepLevels(result, kept);
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+        result.levels[i].switchIn = ranges[i].switchIn;
+        result.levels[i].switchOut = ranges[i].switchOut;
+        result.levels[i].level = int(i);
     }
 }
 

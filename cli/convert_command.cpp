@@ -5,6 +5,7 @@
 #include "input_losses.h"
 #include "commands.h"
 #include "assembly_convert.h"
+#include "hierarchical_lod.h"
 #include "lod_output.h"
 #include "mesh_files.h"
 #include "output_file.h"
@@ -29,6 +30,8 @@ struct ConvertArgs {
     std::string input, output, report;
     std::string lod = "auto";
     std::string instances = "keep";
+    std::string hlod = "auto";
+    std::size_t clusterParts = ClusterTreeOptions{}.leafItems;
     double pixelError = 1.0, fov = 45.0, viewport = 1080.0, distanceRatio = 2.0, cullPixels = 0.0,
            proxyPixels = 8.0;
     bool fromOriginal = false;
@@ -57,7 +60,7 @@ ViewParams viewOf(const ConvertArgs& a)
     return v;
 }
 
-LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& store)
+LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& store, double nearestDistance = 0.0)
 {
     const auto newLevel = [&](int) -> CoreMesh& { return store.add(); };
     if (a.lod == "auto") {
@@ -70,6 +73,7 @@ LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& s
         applyProtection(a.protection, o.simplify);
         o.runTogether = runOnWorkers;
         o.distanceUnit = "m";  // the importer scaled the model to metres
+        o.nearestDistance = nearestDistance;
         CoreMesh scratch;
         return buildLodChain<CoreMesh>(original, scratch, o, newLevel, progress::callback);
     }
@@ -87,6 +91,8 @@ nlohmann::json optionsJson(const ConvertArgs& a, const LoadedMesh& loaded)
 {
     return {{"lod", a.lod},
             {"instances", a.instances},
+            {"hlod", a.hlod},
+            {"clusterParts", a.clusterParts},
             {"pixelError", a.pixelError},
             {"fovY", a.fov},
             {"viewport", a.viewport},
@@ -209,6 +215,51 @@ nlohmann::json assemblyReportJson(const ConvertArgs& a, const AssemblyConversion
                      {"totalSeconds", totalSeconds}}}};
 }
 
+// --hlod auto: the placements in clusters with merged proxies, when the chain plans the
+// levels (a level list has no error to switch a proxy by) and there are parts to cluster.
+bool clustersPlacements(const ConvertArgs& a, const AssemblyConversion& c)
+{
+    return a.hlod == "auto" && a.lod == "auto" && c.model.placements.size() > 1;
+}
+
+HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, const ImportSettings& importing)
+{
+    if (!clustersPlacements(a, c))
+        return {};
+    HierarchyOptions options;
+    options.tree.leafItems = a.clusterParts;
+    options.view = viewOf(a);
+    return buildHierarchy(c, options, importing, [&](CoreMesh& merged, LevelStore& store, double nearest) {
+        return buildLevels(a, merged, store, nearest);
+    });
+}
+
+nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
+{
+    return {{"mode", a.hlod},
+            {"clusters", h.clusters},
+            {"withProxies", h.proxied},
+            {"proxyLevels", h.proxyLevels},
+            {"proxyTriangles", h.proxyTriangles},
+            {"mergedTriangles", h.inputTriangles},
+            {"clusterParts", a.clusterParts},
+            {"fanout", ClusterTreeOptions{}.fanout}};
+}
+
+void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
+{
+    if (h.clusters == 0) {
+        std::fprintf(stderr, "cadlod: hlod off: one LOD node per placed part%s\n",
+                     a.hlod == "auto" ? (a.lod == "auto" ? " (one placement)" : " (a level list has no errors)") : "");
+        return;
+    }
+    std::fprintf(stderr,
+                 "cadlod: hlod: %zu clusters of up to %zu placements (%zu per node), %zu with proxies: %zu proxy "
+                 "levels, %zu triangles, merged from %zu\n",
+                 h.clusters, a.clusterParts, ClusterTreeOptions{}.fanout, h.proxied, h.proxyLevels, h.proxyTriangles,
+                 h.inputTriangles);
+}
+
 // An assembly that shares geometry: each distinct part simplified once, placed by instances.
 void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSettings& importing,
                       const SaveSettings& saving, Clock::time_point t0, OutputSet& outputs, const LoadedMesh& loaded)
@@ -222,6 +273,7 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
                                            [&](CoreMesh& original, LevelStore& store) {
                                                return buildLevels(a, original, store);
                                            });
+    const HierarchyStats hierarchy = clusterPlacements(a, c, importing);
     c.model.units = saving.units;
     const double lodSeconds = secondsSince(t1);
     const auto t2 = Clock::now();
@@ -237,12 +289,15 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     progress::finish();
     if (!a.report.empty())
         outputs.write(a.report, [&](const std::string& temporary) {
-            return writeJsonTo(temporary, assemblyReportJson(a, c, written, loaded, importSeconds, lodSeconds,
-                                                             writeSeconds, secondsSince(t0)));
+            nlohmann::json report = assemblyReportJson(a, c, written, loaded, importSeconds, lodSeconds,
+                                                       writeSeconds, secondsSince(t0));
+            report["hlod"] = hierarchyJson(a, hierarchy);
+            return writeJsonTo(temporary, report);
         });
     outputs.commit();
     if (!a.common.quiet) {
         printAssemblySummary(c, written, a.output);
+        printHierarchySummary(a, hierarchy);
         printFindingsSummary(loaded);
     }
 }
@@ -363,6 +418,15 @@ void addConvertCommand(CLI::App& app)
                     "keep: a part the file places many times (USE, Inline) is simplified once and written as an "
                     "OpenFlight instance; expand: a copy per placement")
         ->check(CLI::IsMember({"keep", "expand"}))
+        ->capture_default_str();
+    cmd->add_option("--hlod", args->hlod,
+                    "auto: the placements of an assembly in clusters of nearby parts, each drawn far off as one "
+                    "merged, simplified proxy (switch distances held at every node's nearest point); off: one LOD "
+                    "node per part")
+        ->check(CLI::IsMember({"auto", "off"}))
+        ->capture_default_str();
+    cmd->add_option("--cluster-parts", args->clusterParts, "hlod: at most this many placements in a leaf cluster")
+        ->check(CLI::PositiveNumber)
         ->capture_default_str();
     cmd->add_flag("--from-original", args->fromOriginal, "List: simplify every level from the original");
     cmd->add_option("--samples", args->samples, "Hausdorff samples per side (0: automatic)");

@@ -66,6 +66,9 @@ struct LodChainOptions {
     int setId = 1;
     RunTogether runTogether;          // measuring a level beside the next collapses; empty: in sequence
     std::string distanceUnit = "model units";  // how the progress names distances
+    // > 0: the first level is planned for this distance when it is farther than the usual
+    // first distance; a cluster proxy, never drawn nearer, needs no level before it.
+    double nearestDistance = 0.0;
 };
 
 // Where the model is this many pixels high (its diagonal), the pieces go into the far field

@@ -193,10 +193,12 @@ private:
         dFill_ = detail::distanceForPixels(size, view_.viewportHeightPx, view_);
         dProxy_ = detail::distanceForPixels(size, options_.proxyPixels, view_);
         plannedLevels_ = std::max(
-            1, int(std::ceil(std::log(dProxy_ * kCloseUpFactor / dFill_) / std::log(options_.distanceRatio))));
+            1, int(std::ceil(std::log(dProxy_ / firstDistance()) / std::log(options_.distanceRatio))));
         dTetrahedron_ = detail::distanceForPixels(size, kTetrahedronPixels, view_);
         dFarField_ = detail::distanceForPixels(size, kFarFieldPixels, view_);
     }
+
+    double firstDistance() const { return std::max(dFill_ / kCloseUpFactor, options_.nearestDistance); }
 
     // The distances of the planned levels, each followed by the one halfway to the next,
     // until the box proxy serves (or the tetrahedra take over).
@@ -205,7 +207,7 @@ private:
         const double halfStep = std::sqrt(options_.distanceRatio);
         bool planned = true;
         int k = 0;
-        for (double d = dFill_ / kCloseUpFactor;; d *= halfStep, planned = !planned, k += planned ? 1 : 0) {
+        for (double d = firstDistance();; d *= halfStep, planned = !planned, k += planned ? 1 : 0) {
             if (d >= dProxy_) {
                 if (!boxProxy_.mesh)
                     takeBoxProxy();

@@ -2,6 +2,7 @@
 
 #include "openflight/level_writer.h"
 
+#include <algorithm>
 #include <map>
 #include <utility>
 
@@ -25,7 +26,8 @@ using WrittenForm = std::pair<std::size_t, bool>;
 class InstancedWriter {
 public:
     InstancedWriter(const InstancedModel& model, const WriteOptions& options, ByteWriter& w, InstancedWriteStats& stats)
-        : model_(model), w_(w), stats_(stats), levels_(options, w, stats, model.distinctTriangles())
+        : model_(model), w_(w), stats_(stats),
+          levels_(options, w, stats, model.distinctTriangles() + model.proxyTriangles())
     {
         for (const PartPlacement& p : model.placements)
             ++uses_[{p.definition, p.mirrored()}];
@@ -35,14 +37,59 @@ public:
     {
         writeDatabaseHead(w_, model_.name, model_.units);
         openRootGroup(w_, model_.name);
-        for (const PartPlacement& p : model_.placements)
-            if (!writePlacement(p, error))
-                return false;
+        const bool written = model_.clusters.empty() ? writePlacements(all(model_.placements.size()), error)
+                                                     : writeCluster(model_.clusters.front(), error);
+        if (!written)
+            return false;
         closeRootGroup(w_);
         return true;
     }
 
 private:
+    static std::vector<std::size_t> all(std::size_t n)
+    {
+        std::vector<std::size_t> v(n);
+        for (std::size_t i = 0; i < n; ++i)
+            v[i] = i;
+        return v;
+    }
+
+    bool writePlacements(const std::vector<std::size_t>& placements, std::string& error)
+    {
+        for (std::size_t p : placements)
+            if (!writePlacement(model_.placements[p], error))
+                return false;
+        return true;
+    }
+
+    bool writeCluster(const PlacementCluster& c, std::string& error)
+    {
+        writeGroup(w_, c.name);
+        writeLongIdIfNeeded(w_, c.name);
+        writePush(w_);
+        const bool proxied = !c.proxies.empty();
+        if (proxied) {
+            const std::string near = c.name + " near";
+            writeLod(w_, near, c.nearRange(), 0.0, c.center);
+            writeLongIdIfNeeded(w_, near);
+            writePush(w_);
+            ++stats_.lodNodes;
+        }
+        for (std::size_t child : c.clusters)
+            if (!writeCluster(model_.clusters[child], error))
+                return false;
+        if (!writePlacements(c.placements, error))
+            return false;
+        if (proxied) {
+            writePop(w_);
+            levels_.writeLevels(c.proxies, true);
+            stats_.proxyLevels += c.proxies.size();
+        }
+        writePop(w_);
+        ++stats_.clusters;
+        return true;
+    }
+
     bool writePlacement(const PartPlacement& p, std::string& error)
     {
         const WrittenForm form{p.definition, p.mirrored()};
@@ -101,6 +148,37 @@ private:
     std::map<WrittenForm, int> numbers_;
 };
 
+// A tree below clusters[0] that holds every placement once, its proxies' ranges usable.
+bool validateClusters(const InstancedModel& model, std::string& error)
+{
+    if (model.clusters.empty())
+        return true;
+    std::vector<int> placed(model.placements.size(), 0);
+    for (std::size_t c = 0; c < model.clusters.size(); ++c) {
+        const PlacementCluster& cluster = model.clusters[c];
+        for (std::size_t child : cluster.clusters)
+            if (child <= c || child >= model.clusters.size()) {
+                error = "cluster " + cluster.name + " holds cluster " + std::to_string(child) + ", not one below it";
+                return false;
+            }
+        for (std::size_t p : cluster.placements)
+            if (p >= placed.size() || placed[p]++ > 0) {
+                error = "cluster " + cluster.name + " holds placement " + std::to_string(p) +
+                        ", unknown or already held";
+                return false;
+            }
+        if (!cluster.proxies.empty() && !validateLevels(cluster.proxies, error)) {
+            error = "cluster " + cluster.name + ": " + error;
+            return false;
+        }
+    }
+    if (std::find(placed.begin(), placed.end(), 0) != placed.end()) {
+        error = "a placement is in no cluster";
+        return false;
+    }
+    return true;
+}
+
 bool validate(const InstancedModel& model, const WriteOptions& options, std::string& error)
 {
     if (options.geometry != GeometryRecords::Meshes) {
@@ -112,6 +190,8 @@ bool validate(const InstancedModel& model, const WriteOptions& options, std::str
             error = "part " + d.name + ": " + error;
             return false;
         }
+    if (!validateClusters(model, error))
+        return false;
     for (const PartPlacement& p : model.placements)
         if (p.definition >= model.definitions.size()) {
             error = "placement " + p.name + " refers to part " + std::to_string(p.definition) + " of " +
@@ -139,6 +219,15 @@ std::size_t InstancedModel::placedTriangles() const
     std::size_t n = 0;
     for (const PartPlacement& p : placements)
         n += finestTriangles(definitions.at(p.definition));
+    return n;
+}
+
+std::size_t InstancedModel::proxyTriangles() const
+{
+    std::size_t n = 0;
+    for (const PlacementCluster& c : clusters)
+        for (const Level& l : c.proxies)
+            n += l.triangleCount();
     return n;
 }
 

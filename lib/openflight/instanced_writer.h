@@ -4,6 +4,8 @@
 //     [Instance Definition n Push {levels} Pop]   before the first placement of a shared part
 //     Group Matrix Push { Instance Reference n | levels } Pop
 //   }* Pop Pop
+// or, with clusters, Group Push { LOD near Push {clusters, placements} Pop, LOD proxy* } Pop
+// in place of the list of placements.
 // A part placed once is written inside its Group. A part placed in a mirror (negative
 // determinant) has a definition of its own, its triangles turned round, so that its faces
 // stay outward. OSG drops a Matrix on an Instance Reference, so it goes on the Group.
@@ -29,20 +31,40 @@ struct PartPlacement {
     bool mirrored() const;
 };
 
+// Placements near each other (HLOD, design.md §5): drawn as what they hold nearer than
+// nearRange() from the centre, as the proxies (their parts merged and simplified) from there
+// on. Written as a Group holding a LOD record for the near range, over the child clusters
+// and placements, beside one LOD record per proxy.
+struct PlacementCluster {
+    std::string name;
+    Vec3d center{0, 0, 0};
+    std::vector<Level> proxies;           // finest first, in model coordinates, contiguous ranges
+    std::vector<std::size_t> clusters;    // the clusters below, by index (greater than this one's)
+    std::vector<std::size_t> placements;  // the placements in it, by index
+
+    double nearRange() const { return proxies.empty() ? 0.0 : proxies.front().switchOut; }
+};
+
 struct InstancedModel {
     std::string name = "cadlod";
     Units units = Units::Meters;
     std::vector<PartDefinition> definitions;
     std::vector<PartPlacement> placements;
+    // Empty: every placement right under the root. Else [0] is the root cluster, and every
+    // placement is in exactly one cluster.
+    std::vector<PlacementCluster> clusters;
 
     std::size_t distinctTriangles() const;  // every definition's levels once
     std::size_t placedTriangles() const;    // the finest level of every placement
+    std::size_t proxyTriangles() const;     // every cluster's proxies
 };
 
 struct InstancedWriteStats : WriteStats {
     std::size_t placements = 0;
     std::size_t instanceDefinitions = 0;
     std::size_t instanceReferences = 0;
+    std::size_t clusters = 0;
+    std::size_t proxyLevels = 0;
 };
 
 // Mesh records only (Face records share one Vertex Palette, which instances cannot).

@@ -5,9 +5,11 @@
 #include "cli_runner.h"
 #include "osg_assembly_probe.h"
 
+#include "lod/nearest_point.h"
 #include "vrml/importer.h"
 
 #include <gtest/gtest.h>
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -135,10 +137,14 @@ TEST(CliAssembly, InstancesKeptDrawTheExpandedModelWithEveryPlacementNamedAndEac
     }
 
     // One subgraph per distinct part and level: the knob and the plain bracket shared, the
-    // mirrored bracket (one per board, so shared as well) apart, the board's own box placed 3x.
+    // mirrored bracket (one per board, so shared as well) apart, the board's own box placed 3x;
+    // and the clusters' near ranges and proxies.
     std::size_t levels = 0;
     for (const auto& part : report.at("parts"))
         levels += part.at("levels").size() * (part.at("name") == "bracket" ? 2 : 1);
+    const nlohmann::json& hlod = report.at("hlod");
+    EXPECT_GE(hlod.at("withProxies").get<std::size_t>(), 1u);
+    levels += hlod.at("proxyLevels").get<std::size_t>() + hlod.at("withProxies").get<std::size_t>();
     EXPECT_EQ(osg.lodSubgraphs, levels);
     EXPECT_EQ(report.at("output").at("instanceDefinitions").get<std::size_t>(), 4u);
     EXPECT_GE(osg.sharedNodes, 4u);
@@ -187,9 +193,10 @@ TEST(CliAssembly, TooManyPlacementsFailWithoutOutput)
 
 namespace cadlod::test {
 
-// A part's LOD node holds its pixel error at the part's nearest point: its switch distances
-// are the part's own chain's (converted alone), pushed out by its radius about the centre.
-TEST(CliAssembly, EveryPartSwitchesItsOwnChainPushedOutByItsRadius)
+// A part's LOD node holds its pixel error at the part's nearest point (nearest_point.h):
+// each switch distance is the part's own chain's (converted alone), pushed out by how far
+// the level reaches from the centre, and never nearer than kNearestPointReach times that.
+TEST(CliAssembly, EveryPartSwitchesItsOwnChainWhereItHoldsAtItsNearestPoint)
 {
     const std::string dir = freshDirectory("assembly_radius");
     const std::string input = writeAssembly(dir);
@@ -207,19 +214,27 @@ TEST(CliAssembly, EveryPartSwitchesItsOwnChainPushedOutByItsRadius)
     ASSERT_NE(placed, nullptr);
     const auto& own = knob.at("levels");
     const auto& shifted = placed->at("levels");
-    ASSERT_EQ(own.size(), shifted.size());
     ASSERT_GE(own.size(), 3u);
+    ASSERT_GE(shifted.size(), 3u);
     // The knob: a sphere of 2 mm about the origin and a pin along y (VRML's cylinder axis),
     // 3 mm long, 0.5 mm thick, centred 2 mm up; its box centre is at z = 0.25 mm, its farthest
-    // vertices where the pin's ends reach z = 2.5 mm, 1.5 mm out along y.
+    // vertices where the pin's ends reach z = 2.5 mm, 1.5 mm out along y. A simplified level
+    // reaches about as far (more than half of it); a coarse one (a box, a tetrahedron grown
+    // about the centre) may reach farther, up to twice the box's half-diagonal.
     const double radius = std::hypot(0.0015, 0.00225);
+    const double farthest = 2 * std::sqrt(0.002 * 0.002 + 0.002 * 0.002 + 0.00225 * 0.00225);
     EXPECT_DOUBLE_EQ(shifted[0].at("switchOut").get<double>(), 0.0);
-    for (std::size_t k = 0; k + 1 < own.size(); ++k) {
-        EXPECT_NEAR(shifted[k].at("switchIn").get<double>(), own[k].at("switchIn").get<double>() + radius, 2e-5)
-            << "level " << k;
-        EXPECT_NEAR(shifted[k + 1].at("switchOut").get<double>(), own[k + 1].at("switchOut").get<double>() + radius,
-                    2e-5)
-            << "level " << k + 1;
+    for (std::size_t k = 1; k < shifted.size(); ++k) {
+        const double out = shifted[k].at("switchOut").get<double>();
+        EXPECT_DOUBLE_EQ(shifted[k - 1].at("switchIn").get<double>(), out) << "level " << k;
+        const nlohmann::json* same = nullptr;
+        for (const auto& level : own)
+            if (level.at("faces") == shifted[k].at("faces"))
+                same = &level;
+        ASSERT_NE(same, nullptr) << "level " << k << " is none of the part's own chain";
+        const double ownOut = same->at("switchOut").get<double>();
+        EXPECT_GE(out, switchAtNearestPoint(ownOut, radius / 2)) << "level " << k;
+        EXPECT_LE(out, switchAtNearestPoint(ownOut, farthest) + 1e-9) << "level " << k;
     }
 }
 

@@ -82,7 +82,7 @@ private:
         if (node.getNumParents() > 1)
             shared_.insert(&node);
         if (!node.getName().empty()) {
-            if (!isModelName(node.getName()) && placement().empty())
+            if (!isFrame(node.getName()) && placement().empty())
                 ++probe_.placements[node.getName()].visits;
             names_.push_back(node.getName());
             ++probe_.named[node.getName()].visits;
@@ -134,9 +134,18 @@ private:
     std::string placement() const
     {
         for (const std::string& name : names_)
-            if (!isModelName(name))
+            if (!isFrame(name))
                 return name;
         return {};
+    }
+
+    // The model's root and the clusters of hierarchical LOD ("cluster 1.2": a space no VRML
+    // name holds), with the LOD nodes OSG makes of their records ("newLOD", "LOD child0"),
+    // frame the placements.
+    bool isFrame(const std::string& name) const
+    {
+        return isModelName(name) || name.rfind("cluster ", 0) == 0 || name == "newLOD" ||
+               name.rfind("LOD child", 0) == 0;
     }
 
     // The header's ID holds 7 characters of the model's name; the root Group all of it.

@@ -22,7 +22,8 @@ struct OsgAssemblyProbe {
     bool loaded = false;
     double loadSeconds = 0;
     std::map<std::string, OsgNamedNode> named;
-    // The outermost named nodes below the model's root (named after the model): the placements.
+    // The outermost named nodes below the model's root (named after the model) and its
+    // clusters: the placements.
     std::map<std::string, OsgNamedNode> placements;
     std::vector<std::array<std::array<double, 3>, 3>> finestTriangles;  // world coordinates
     std::size_t sharedNodes = 0;     // distinct nodes with more than one parent

@@ -1,0 +1,399 @@
+#include "hierarchical_lod.h"
+
+#include "cli_errors.h"
+#include "progress_bar.h"
+
+#include "lod/lod_chain.h"
+#include "lod/nearest_point.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace cadlod::cli {
+namespace {
+
+using flt::Vec3d;
+
+Vec3d transformed(const flt::Mat4d& m, const Vec3d& p)
+{
+    Vec3d out{};
+    for (int r = 0; r < 3; ++r)
+        out[r] = m[r][0] * p[0] + m[r][1] * p[1] + m[r][2] * p[2] + m[r][3];
+    return out;
+}
+
+double largestScale(const flt::Mat4d& m)
+{
+    double s = 0;
+    for (int c = 0; c < 3; ++c)
+        s = std::max(s, std::sqrt(m[0][c] * m[0][c] + m[1][c] * m[1][c] + m[2][c] * m[2][c]));
+    return s;
+}
+
+// The box, in the model, of a part's finest level where a placement puts it.
+Box3 placedBox(const flt::Level& level, const flt::Mat4d& m)
+{
+    Box3 local, placed;
+    for (const flt::Part& part : level.parts)
+        for (const Vec3d& p : part.positions)
+            local.add(p);
+    if (local.empty())
+        return placed;
+    for (int corner = 0; corner < 8; ++corner)
+        placed.add(transformed(m, {corner & 1 ? local.hi[0] : local.lo[0], corner & 2 ? local.hi[1] : local.lo[1],
+                                   corner & 4 ? local.hi[2] : local.lo[2]}));
+    return placed;
+}
+
+double reachFrom(const Vec3d& centre, const flt::Level& level)
+{
+    double r2 = 0;
+    for (const flt::Part& part : level.parts)
+        for (const Vec3d& p : part.positions) {
+            const double dx = p[0] - centre[0], dy = p[1] - centre[1], dz = p[2] - centre[2];
+            r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
+        }
+    return std::sqrt(r2);
+}
+
+// A level a cluster may be drawn as: in model coordinates, its error against the parts it
+// stands for, and how far its vertices reach from the cluster's centre.
+struct Candidate {
+    flt::Level level;
+    double error = 0;
+    double reach = 0;
+};
+
+struct ClusterWork {
+    Vec3d centre{};
+    double radius = 0;
+    std::vector<Candidate> candidates;  // finest first; empty: drawn as what it holds
+    // The candidates worth drawing, and from which distance to the centre each is drawn.
+    std::vector<std::size_t> selected;
+    std::vector<double> from;
+};
+
+// The parts of some levels, placed, merged into one part per colour about `centre`.
+class MergedParts {
+public:
+    explicit MergedParts(const Vec3d& centre) : centre_(centre) {}
+
+    void add(const flt::Level& level, const flt::Mat4d& m, bool mirrored)
+    {
+        for (const flt::Part& part : level.parts)
+            addPart(part, m, mirrored);
+    }
+
+    std::size_t triangles() const { return triangles_; }
+    std::vector<vrml::Part> take() { return std::move(parts_); }
+
+private:
+    void addPart(const flt::Part& part, const flt::Mat4d& m, bool mirrored)
+    {
+        std::map<std::size_t, std::vector<std::uint32_t>> remaps;  // per merged part
+        for (std::size_t t = 0; t < part.triangles.size(); ++t) {
+            const std::size_t target = partFor(part.colorOf(t));
+            std::vector<std::uint32_t>& remap = remaps[target];
+            remap.resize(part.positions.size(), kUnset);
+            vrml::Part& out = parts_[target];
+            flt::Triangle tri = part.triangles[t];
+            if (mirrored)
+                std::swap(tri[1], tri[2]);
+            for (std::uint32_t v : tri) {
+                if (remap[v] == kUnset) {
+                    remap[v] = std::uint32_t(out.positions.size());
+                    const Vec3d p = transformed(m, part.positions[v]);
+                    out.positions.push_back({float(p[0] - centre_[0]), float(p[1] - centre_[1]),
+                                             float(p[2] - centre_[2])});
+                }
+                out.triangles.push_back(remap[v]);
+            }
+            ++triangles_;
+        }
+    }
+
+    std::size_t partFor(const Rgba& colour)
+    {
+        const auto found = byColour_.find(colour);
+        if (found != byColour_.end())
+            return found->second;
+        vrml::Part part;
+        part.color = colour;
+        part.name = "colour " + std::to_string(parts_.size() + 1);
+        parts_.push_back(std::move(part));
+        return byColour_[colour] = parts_.size() - 1;
+    }
+
+    static constexpr std::uint32_t kUnset = std::numeric_limits<std::uint32_t>::max();
+    Vec3d centre_;
+    std::vector<vrml::Part> parts_;
+    std::map<Rgba, std::size_t> byColour_;
+    std::size_t triangles_ = 0;
+};
+
+// A level's draw calls: one per colour of each part (a Mesh record per colour).
+std::size_t drawables(const flt::Level& level)
+{
+    std::size_t n = 0;
+    for (const flt::Part& part : level.parts) {
+        if (!part.hasTriangleColors()) {
+            ++n;
+            continue;
+        }
+        std::vector<Rgba> colours(part.triangleColors);
+        std::sort(colours.begin(), colours.end());
+        n += std::size_t(std::unique(colours.begin(), colours.end()) - colours.begin());
+    }
+    return n;
+}
+
+double drawCost(const flt::Level& level)
+{
+    return double(level.triangleCount()) + kDrawCallTriangles * double(drawables(level));
+}
+
+const flt::Mat4d kIdentity{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+
+class HierarchyBuilder {
+public:
+    HierarchyBuilder(AssemblyConversion& c, const HierarchyOptions& options, const ImportSettings& settings,
+                     const BuildProxyChain& buildProxyChain)
+        : c_(c), options_(options), settings_(settings), buildProxyChain_(buildProxyChain)
+    {
+    }
+
+    HierarchyStats build()
+    {
+        std::vector<Box3> boxes;
+        for (const flt::PartPlacement& p : c_.model.placements)
+            boxes.push_back(placedBox(c_.model.definitions[p.definition].levels.front(), p.matrix));
+        nodes_ = buildClusterTree(boxes, options_.tree);
+        work_.resize(nodes_.size());
+        for (std::size_t n = nodes_.size(); n-- > 0;)  // children first
+            makeProxies(n);
+        c_.model.clusters.resize(nodes_.size());
+        if (!nodes_.empty())
+            placeCluster(0, kNeverCulled, "cluster 1");
+        stats_.clusters = nodes_.size();
+        return stats_;
+    }
+
+private:
+    // Where a level of this error and reach is switched in, at the cluster's nearest point.
+    double switchDistance(double error, double reach) const
+    {
+        return switchAtNearestPoint(projectedErrorDistance(error, options_.view), reach);
+    }
+
+    void makeProxies(std::size_t n)
+    {
+        const ClusterNode& node = nodes_[n];
+        ClusterWork& work = work_[n];
+        work.centre = node.box.center();
+        work.radius = node.box.halfDiagonal();
+        if (node.children.size() + node.items.size() < 2)
+            return;  // its one part or cluster is drawn as itself
+        // The error a proxy may show where it can first be drawn, at its nearest point.
+        const double nearest = switchAtNearestPoint(0.0, work.radius);
+        const double allowance =
+            kProxyInputShare * errorBudgetAt(nearest - work.radius, options_.view);
+        MergedParts merged(work.centre);
+        double inputError = 0;
+        gather(n, allowance, merged, inputError);
+        stats_.inputTriangles += merged.triangles();
+        progress::beginSpan(int(100 * (nodes_.size() - 1 - n) / nodes_.size()),
+                            int(100 * (nodes_.size() - n) / nodes_.size()),
+                            "proxy " + std::to_string(nodes_.size() - n) + "/" + std::to_string(nodes_.size()));
+        // The chain's first level then lands about where the proxy can first be drawn.
+        const double first = std::max(0.0, nearest - work.radius - projectedErrorDistance(inputError, options_.view));
+        simplifyTogether(merged, inputError, first, work);
+        progress::endSpan();
+        select(n);
+    }
+
+    // A candidate is drawn from where it holds at the nearest point, if it is lighter there
+    // than what the cluster holds; a coarser one that holds as near serves instead.
+    void select(std::size_t n)
+    {
+        ClusterWork& work = work_[n];
+        for (std::size_t k = 0; k < work.candidates.size(); ++k) {
+            const Candidate& candidate = work.candidates[k];
+            const double s = switchDistance(candidate.error, candidate.reach);
+            if (drawCost(candidate.level) >= drawnBelow(n, s))
+                continue;
+            while (!work.from.empty() && s <= work.from.back()) {
+                work.selected.pop_back();
+                work.from.pop_back();
+            }
+            work.selected.push_back(k);
+            work.from.push_back(s);
+        }
+    }
+
+    // What drawing what cluster n holds costs, seen from distance d (to every node's centre
+    // alike: an estimate).
+    double drawnBelow(std::size_t n, double d) const
+    {
+        double triangles = 0;
+        for (std::size_t p : nodes_[n].items)
+            triangles += drawCost(placedLevelAt(c_.model.placements[p], d));
+        for (std::size_t child : nodes_[n].children)
+            triangles += drawnAt(child, d);
+        return triangles;
+    }
+
+    double drawnAt(std::size_t n, double d) const
+    {
+        const ClusterWork& work = work_[n];
+        for (std::size_t i = work.selected.size(); i-- > 0;)
+            if (work.from[i] <= d)
+                return drawCost(work.candidates[work.selected[i]].level);
+        return drawnBelow(n, d);
+    }
+
+    const flt::Level& placedLevelAt(const flt::PartPlacement& p, double d) const
+    {
+        const std::vector<flt::Level>& levels = c_.model.definitions[p.definition].levels;
+        const double local = d / std::max(largestScale(p.matrix), 1e-300);
+        for (const flt::Level& l : levels)
+            if (l.switchOut <= local && local < l.switchIn)
+                return l;
+        return local < levels.front().switchIn ? levels.front() : levels.back();
+    }
+
+    double errorBudgetAt(double d, const ViewParams& view) const { return detail::errorBudgetAt(d, view); }
+
+    // What cluster n holds, each at its coarsest level within `allowance`.
+    void gather(std::size_t n, double allowance, MergedParts& merged, double& inputError) const
+    {
+        for (std::size_t p : nodes_[n].items)
+            addPlacement(c_.model.placements[p], allowance, merged, inputError);
+        for (std::size_t child : nodes_[n].children) {
+            const Candidate* best = nullptr;
+            for (const Candidate& candidate : work_[child].candidates)
+                if (candidate.error <= allowance)
+                    best = &candidate;
+            if (!best) {
+                gather(child, allowance, merged, inputError);
+                continue;
+            }
+            merged.add(best->level, kIdentity, false);
+            inputError = std::max(inputError, best->error);
+        }
+    }
+
+    void addPlacement(const flt::PartPlacement& p, double allowance, MergedParts& merged, double& inputError) const
+    {
+        const std::vector<flt::Level>& levels = c_.model.definitions[p.definition].levels;
+        const std::vector<LodLevel>& measured = c_.parts[p.definition].result.levels;
+        const double scale = largestScale(p.matrix);
+        std::size_t best = 0;
+        for (std::size_t k = 1; k < levels.size() && k < measured.size(); ++k)
+            if (scale * measured[k].hausdorffMax <= allowance)
+                best = k;
+        merged.add(levels[best], p.matrix, p.mirrored());
+        if (best < measured.size())
+            inputError = std::max(inputError, scale * measured[best].hausdorffMax);
+    }
+
+    void simplifyTogether(MergedParts& merged, double inputError, double firstDistance, ClusterWork& work)
+    {
+        if (merged.triangles() == 0)
+            return;
+        CoreMesh mesh;
+        LoadedMesh info;
+        partToMesh(merged.take(), "cluster", mesh, settings_, info);
+        LevelStore store;
+        const LodSetResult result = buildProxyChain_(mesh, store, firstDistance);
+        if (!result.ok())
+            throw InputError("a cluster proxy: " + result.error);
+        std::vector<CoreMesh*> meshes{&mesh};
+        for (auto& m : store.meshes)
+            meshes.push_back(m.get());
+        std::size_t skipped = 0;
+        flt::LodModel levels = lodMeshesToModel(meshes, result.levels.front().setId, "proxy", skipped);
+        for (std::size_t k = 0; k < levels.levels.size() && k < result.levels.size(); ++k) {
+            Candidate candidate;
+            candidate.level = std::move(levels.levels[k]);
+            moveTo(candidate.level, work.centre);
+            candidate.error = inputError + result.levels[k].hausdorffMax;
+            candidate.reach = reachFrom(work.centre, candidate.level);
+            work.candidates.push_back(std::move(candidate));
+        }
+    }
+
+    static void moveTo(flt::Level& level, const Vec3d& centre)
+    {
+        for (flt::Part& part : level.parts)
+            for (Vec3d& p : part.positions)
+                for (int a = 0; a < 3; ++a)
+                    p[a] += centre[a];
+        level.center = centre;
+    }
+
+    // Cluster n's proxies that are ever drawn: below `cutoff` (where the parent's proxy
+    // takes over, seen from this cluster's centre), each from where it holds.
+    void placeCluster(std::size_t n, double cutoff, const std::string& name)
+    {
+        flt::PlacementCluster& out = c_.model.clusters[n];
+        out.name = name;
+        out.center = work_[n].centre;
+        out.placements = nodes_[n].items;
+        out.clusters = nodes_[n].children;
+        out.proxies = keptProxies(work_[n], cutoff, name);
+        if (!out.proxies.empty()) {
+            ++stats_.proxied;
+            stats_.proxyLevels += out.proxies.size();
+            for (const flt::Level& l : out.proxies)
+                stats_.proxyTriangles += l.triangleCount();
+        }
+        const double below = out.proxies.empty() ? cutoff : out.nearRange();
+        for (std::size_t i = 0; i < nodes_[n].children.size(); ++i) {
+            const std::size_t child = nodes_[n].children[i];
+            placeCluster(child, below + distance(work_[n].centre, work_[child].centre),
+                         name + "." + std::to_string(i + 1));
+        }
+    }
+
+    std::vector<flt::Level> keptProxies(ClusterWork& work, double cutoff, const std::string& name) const
+    {
+        std::size_t n = 0;
+        while (n < work.from.size() && work.from[n] < cutoff)
+            ++n;
+        std::vector<flt::Level> proxies;
+        for (std::size_t i = 0; i < n; ++i) {
+            flt::Level level = std::move(work.candidates[work.selected[i]].level);
+            level.name = name + " proxy " + std::to_string(i + 1);
+            level.switchOut = work.from[i];
+            level.switchIn = i + 1 < n ? work.from[i + 1] : kNeverCulled;
+            proxies.push_back(std::move(level));
+        }
+        work.candidates.clear();
+        return proxies;
+    }
+
+    static double distance(const Vec3d& a, const Vec3d& b)
+    {
+        return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+    }
+
+    AssemblyConversion& c_;
+    const HierarchyOptions& options_;
+    const ImportSettings& settings_;
+    const BuildProxyChain& buildProxyChain_;
+    std::vector<ClusterNode> nodes_;
+    std::vector<ClusterWork> work_;
+    HierarchyStats stats_;
+};
+
+}  // namespace
+
+HierarchyStats buildHierarchy(AssemblyConversion& c, const HierarchyOptions& options, const ImportSettings& settings,
+                              const BuildProxyChain& buildProxyChain)
+{
+    return HierarchyBuilder(c, options, settings, buildProxyChain).build();
+}
+
+}  // namespace cadlod::cli

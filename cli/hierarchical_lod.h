@@ -1,0 +1,54 @@
+// Hierarchical LOD over the placements of an instanced assembly (design.md §5, HLOD): the
+// placements go into a tree of clusters of nearby parts (lod/cluster_tree.h); each cluster
+// gets proxies, its parts merged by colour and simplified together by the same chain, so
+// that small parts vanish and gaps close; a cluster is drawn as its proxy from where the
+// proxy's error holds at the cluster's nearest point (lod/nearest_point.h), as its parts
+// nearer. Shared parts stay instances below the clusters.
+//
+// A proxy is made bottom-up from what the cluster holds, each at its coarsest level (part
+// level or child proxy) whose error is at most kProxyInputShare of the error the proxy may
+// show where it is first drawn; its error is that input's plus its own measured against
+// the input (the triangle inequality of the Hausdorff distance). A proxy is kept where it
+// costs less to draw than what it replaces; its ranges are then set top-down: a proxy only
+// the parent's proxy would hide is left out.
+#pragma once
+
+#include "assembly_convert.h"
+
+#include "lod/cluster_tree.h"
+#include "lod/lod_plan.h"
+
+#include <functional>
+#include <string>
+
+namespace cadlod::cli {
+
+// The chain of a cluster's merged parts, planned from `nearestDistance` on.
+using BuildProxyChain = std::function<LodSetResult(CoreMesh& merged, LevelStore& store, double nearestDistance)>;
+
+struct HierarchyOptions {
+    ClusterTreeOptions tree;
+    ViewParams view;
+};
+
+// Of the error a proxy may show where it is first drawn, the share its input may use.
+inline constexpr double kProxyInputShare = 0.5;
+
+// A proxy replaces what a cluster holds where drawing it costs less, a draw call counting
+// as this many triangles (the per-call work of a renderer).
+inline constexpr double kDrawCallTriangles = 256.0;
+
+struct HierarchyStats {
+    std::size_t clusters = 0;
+    std::size_t proxied = 0;         // clusters with at least one proxy
+    std::size_t proxyLevels = 0;
+    std::size_t proxyTriangles = 0;
+    std::size_t inputTriangles = 0;  // merged into proxies, before simplifying
+};
+
+// Puts c.model's placements into clusters with proxies. Throws InputError when a proxy
+// cannot be built.
+HierarchyStats buildHierarchy(AssemblyConversion& c, const HierarchyOptions& options, const ImportSettings& settings,
+                              const BuildProxyChain& buildProxyChain);
+
+}  // namespace cadlod::cli

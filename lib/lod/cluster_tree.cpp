@@ -1,0 +1,117 @@
+#include "lod/cluster_tree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace cadlod {
+
+void Box3::add(const std::array<double, 3>& p)
+{
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(lo[a], p[a]);
+        hi[a] = std::max(hi[a], p[a]);
+    }
+}
+
+void Box3::add(const Box3& b)
+{
+    if (!b.empty()) {
+        add(b.lo);
+        add(b.hi);
+    }
+}
+
+std::array<double, 3> Box3::center() const
+{
+    return {0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2])};
+}
+
+double Box3::halfDiagonal() const
+{
+    if (empty())
+        return 0.0;
+    const double x = hi[0] - lo[0], y = hi[1] - lo[1], z = hi[2] - lo[2];
+    return 0.5 * std::sqrt(x * x + y * y + z * z);
+}
+
+namespace {
+
+using Group = std::vector<std::size_t>;
+
+Box3 centresOf(const Group& g, const std::vector<Box3>& items)
+{
+    Box3 b;
+    for (std::size_t i : g)
+        b.add(items[i].center());
+    return b;
+}
+
+// Cuts `g` in two at the median of its centres along their widest axis.
+std::pair<Group, Group> bisect(Group g, const std::vector<Box3>& items)
+{
+    const Box3 c = centresOf(g, items);
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+        if (c.hi[a] - c.lo[a] > c.hi[axis] - c.lo[axis])
+            axis = a;
+    const auto middle = g.begin() + std::ptrdiff_t(g.size() / 2);
+    std::nth_element(g.begin(), middle, g.end(), [&](std::size_t a, std::size_t b) {
+        const double ca = items[a].center()[axis], cb = items[b].center()[axis];
+        return ca != cb ? ca < cb : a < b;
+    });
+    return {Group(g.begin(), middle), Group(middle, g.end())};
+}
+
+// Splits `g` into at most `fanout` groups, the largest cut first.
+std::vector<Group> split(Group g, const std::vector<Box3>& items, const ClusterTreeOptions& options)
+{
+    std::vector<Group> groups{std::move(g)};
+    while (groups.size() < options.fanout) {
+        auto largest = std::max_element(groups.begin(), groups.end(),
+                                         [](const Group& a, const Group& b) { return a.size() < b.size(); });
+        if (largest->size() <= options.leafItems)
+            break;
+        auto halves = bisect(std::move(*largest), items);
+        *largest = std::move(halves.first);
+        groups.push_back(std::move(halves.second));
+    }
+    return groups;
+}
+
+void buildNode(std::vector<ClusterNode>& nodes, std::size_t index, Group g, const std::vector<Box3>& items,
+               const ClusterTreeOptions& options)
+{
+    for (std::size_t i : g)
+        nodes[index].box.add(items[i]);
+    if (g.size() <= options.leafItems) {
+        std::sort(g.begin(), g.end());
+        nodes[index].items = std::move(g);
+        return;
+    }
+    for (Group& child : split(std::move(g), items, options)) {
+        const std::size_t c = nodes.size();
+        nodes[index].children.push_back(c);
+        nodes.emplace_back();
+        buildNode(nodes, c, std::move(child), items, options);
+    }
+}
+
+}  // namespace
+
+std::vector<ClusterNode> buildClusterTree(const std::vector<Box3>& items, const ClusterTreeOptions& options)
+{
+    std::vector<ClusterNode> nodes;
+    if (items.empty())
+        return nodes;
+    ClusterTreeOptions o = options;
+    o.leafItems = std::max<std::size_t>(o.leafItems, 1);
+    o.fanout = std::max<std::size_t>(o.fanout, 2);
+    Group all(items.size());
+    std::iota(all.begin(), all.end(), std::size_t(0));
+    nodes.emplace_back();
+    buildNode(nodes, 0, std::move(all), items, o);
+    return nodes;
+}
+
+}  // namespace cadlod

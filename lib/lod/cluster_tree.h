@@ -1,0 +1,43 @@
+// A spatial hierarchy of placed parts (design.md §5, HLOD): boxes grouped top-down into
+// clusters of nearby boxes, so that a viewer near one part is far from most clusters. Each
+// split cuts the largest group at the median of its box centres along their widest axis,
+// until a node has `fanout` groups; a node of at most `leafItems` boxes is a leaf. Plain
+// data: no mesh type.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace cadlod {
+
+struct Box3 {
+    std::array<double, 3> lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
+                             std::numeric_limits<double>::max()};
+    std::array<double, 3> hi{-std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
+                             -std::numeric_limits<double>::max()};
+
+    bool empty() const { return lo[0] > hi[0]; }
+    void add(const std::array<double, 3>& p);
+    void add(const Box3& b);
+    std::array<double, 3> center() const;
+    double halfDiagonal() const;  // the radius of the sphere about center() holding the box
+};
+
+struct ClusterNode {
+    Box3 box;
+    std::vector<std::size_t> items;     // the boxes of a leaf, by index
+    std::vector<std::size_t> children;  // the nodes below, by index (after this one)
+    bool leaf() const { return children.empty(); }
+};
+
+struct ClusterTreeOptions {
+    std::size_t leafItems = 16;
+    std::size_t fanout = 8;
+};
+
+// nodes[0] is the root; every item is in exactly one leaf. Empty for no items.
+std::vector<ClusterNode> buildClusterTree(const std::vector<Box3>& items, const ClusterTreeOptions& options = {});
+
+}  // namespace cadlod
