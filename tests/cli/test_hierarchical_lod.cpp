@@ -1,0 +1,112 @@
+// cadlod convert --hlod auto on an assembly of many placements, read back with
+// OpenSceneGraph and drawn from eye points inside it, along it and far from it (design.md
+// §8): no drawable shows more than the bound a viewer reads off its switch distance and its
+// nearest vertex; every placement is drawn exactly once, by itself or by one cluster proxy;
+// every LOD node's ranges are contiguous; far off, a few proxies replace the parts.
+#include "cli_runner.h"
+#include "osg_view_probe.h"
+
+#include "lod/nearest_point.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace cadlod::test {
+namespace {
+
+constexpr int kColumns = 8, kRows = 8, kLayers = 2;
+
+// A knob (a sphere and a red pin) DEF'd once and USE'd on an 8 x 8 x 2 grid, 0.6 m wide.
+std::string writeGrid(const std::string& dir)
+{
+    std::ostringstream text;
+    text << "#VRML V2.0 utf8\n";
+    int n = 0;
+    for (int z = 0; z < kLayers; ++z)
+        for (int y = 0; y < kRows; ++y)
+            for (int x = 0; x < kColumns; ++x, ++n) {
+                text << "DEF P" << n << " Transform { translation " << 0.08 * x << ' ' << 0.08 * y << ' ' << 0.1 * z
+                     << " children ";
+                if (n == 0)
+                    text << "DEF KNOB Group { children [ Shape { geometry Sphere { radius 0.012 } }\n"
+                            "  Transform { translation 0 0 0.015 children Shape { appearance Appearance { material "
+                            "Material { diffuseColor 1 0 0 } } geometry Cylinder { radius 0.003 height 0.03 } } } ] }";
+                else
+                    text << "USE KNOB";
+                text << " }\n";
+            }
+    const std::string path = dir + "/grid.wrl";
+    std::ofstream(path) << text.str();
+    return path;
+}
+
+std::vector<Point3> eyePoints(const std::array<Point3, 2>& box)
+{
+    const Point3 &lo = box[0], &hi = box[1];
+    const Point3 size{hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+    const double diagonal = std::sqrt(size[0] * size[0] + size[1] * size[1] + size[2] * size[2]);
+    std::vector<Point3> eyes;
+    for (int i = 0; i < 4; ++i)  // inside
+        for (int j = 0; j < 4; ++j)
+            for (int k = 0; k < 2; ++k)
+                eyes.push_back({lo[0] + size[0] * (i + 0.5) / 4, lo[1] + size[1] * (j + 0.5) / 4,
+                                lo[2] + size[2] * (k + 0.5) / 2});
+    for (int i = 0; i < 20; ++i)  // walking along, 5 % of the diagonal off its side
+        eyes.push_back({lo[0] + size[0] * (i + 0.5) / 20, lo[1] - 0.05 * diagonal, 0.5 * (lo[2] + hi[2])});
+    for (int i = 0; i < 12; ++i) {  // backing away, from 1x the diagonal to 1000x
+        const double d = diagonal * std::pow(1000.0, i / 11.0);
+        eyes.push_back({0.5 * (lo[0] + hi[0]) - 0.3 * d, 0.5 * (lo[1] + hi[1]) - 0.9 * d,
+                        0.5 * (lo[2] + hi[2]) + 0.3 * d});
+    }
+    return eyes;
+}
+
+}  // namespace
+
+TEST(CliHierarchicalLod, HoldsTheErrorBoundAndDrawsEveryPlacementOnceWhereverTheEyeIs)
+{
+    const std::string dir = freshDirectory("hlod");
+    const std::string input = writeGrid(dir);
+    const CliRun run = runCadlod({"convert", input, "-o", dir + "/grid.flt", "--report", dir + "/grid.json"});
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const nlohmann::json hlod = nlohmann::json::parse(readFile(dir + "/grid.json")).at("hlod");
+    EXPECT_GE(hlod.at("clusters").get<int>(), 9);  // 128 placements, at most 16 to a leaf
+    EXPECT_GE(hlod.at("withProxies").get<int>(), 2);
+
+    const OsgViewProbe osg(dir + "/grid.flt", "grid");
+    ASSERT_TRUE(osg.loaded());
+    for (const OsgLodRanges& node : osg.lodNodes()) {
+        std::vector<std::pair<double, double>> r = node.ranges;
+        std::sort(r.begin(), r.end());
+        ASSERT_FALSE(r.empty());
+        EXPECT_EQ(r.front().first, 0.0);
+        EXPECT_GE(r.back().second, 1e29);
+        for (std::size_t i = 0; i + 1 < r.size(); ++i) {
+            EXPECT_LT(r[i].first, r[i].second);
+            EXPECT_NEAR(r[i].second, r[i + 1].first, 1e-6 * r[i].second);
+        }
+    }
+    std::size_t farDrawables = 0, nearDrawables = 0;
+    const std::vector<Point3> eyes = eyePoints(osg.bounds());
+    for (const Point3& eye : eyes) {
+        const OsgView view = osg.drawFrom(eye);
+        const std::string at = "eye " + std::to_string(eye[0]) + " " + std::to_string(eye[1]) + " " +
+                               std::to_string(eye[2]);
+        EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9)) << at;
+        ASSERT_EQ(view.drawnPlacements.size(), std::size_t(kColumns * kRows * kLayers)) << at;
+        for (const auto& [name, times] : view.drawnPlacements)
+            EXPECT_EQ(times, 1u) << name << " from " << at;
+        if (&eye == &eyes.back())  // 1000x the diagonal off
+            farDrawables = view.drawables;
+        nearDrawables = std::max(nearDrawables, view.drawables);
+    }
+    // Far off, the proxies stand for the 128 knobs (two colours each).
+    EXPECT_GE(nearDrawables, std::size_t(kColumns * kRows));
+    EXPECT_LE(farDrawables, 4u);
+}
+
+}  // namespace cadlod::test
