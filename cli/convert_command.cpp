@@ -16,6 +16,7 @@
 #include "lod/lod_chain.h"
 #include "openflight/flt_writer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -60,6 +61,9 @@ ViewParams viewOf(const ConvertArgs& a)
     return v;
 }
 
+// The fewest Hausdorff samples per side a cluster proxy is measured with.
+constexpr std::size_t kProxySamples = 20000;
+
 LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& store, double nearestDistance = 0.0)
 {
     const auto newLevel = [&](int) -> CoreMesh& { return store.add(); };
@@ -74,6 +78,8 @@ LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& s
         o.runTogether = runOnWorkers;
         o.distanceUnit = "m";  // the importer scaled the model to metres
         o.nearestDistance = nearestDistance;
+        if (nearestDistance > 0 && a.samples == 0)  // a proxy: its parts' levels are measured already
+            o.hausdorffSamples = std::clamp<std::size_t>(std::size_t(original.fn), kProxySamples, 100000);
         CoreMesh scratch;
         return buildLodChain<CoreMesh>(original, scratch, o, newLevel, progress::callback);
     }

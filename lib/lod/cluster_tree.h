@@ -33,7 +33,7 @@ struct ClusterNode {
 };
 
 struct ClusterTreeOptions {
-    std::size_t leafItems = 16;
+    std::size_t leafItems = 48;
     std::size_t fanout = 8;
 };
 

@@ -71,7 +71,7 @@ TEST(CliHierarchicalLod, HoldsTheErrorBoundAndDrawsEveryPlacementOnceWhereverThe
 {
     const std::string dir = freshDirectory("hlod");
     const std::string input = writeGrid(dir);
-    const CliRun run = runCadlod({"convert", input, "-o", dir + "/grid.flt", "--report", dir + "/grid.json"});
+    const CliRun run = runCadlod({"convert", input, "-o", dir + "/grid.flt", "--cluster-parts", "16", "--report", dir + "/grid.json"});
     ASSERT_EQ(run.exitCode, 0) << run.stderrText;
     const nlohmann::json hlod = nlohmann::json::parse(readFile(dir + "/grid.json")).at("hlod");
     EXPECT_GE(hlod.at("clusters").get<int>(), 9);  // 128 placements, at most 16 to a leaf
