@@ -6,7 +6,9 @@
 // frame, as OSG's cull does. A drawn level switched in at s shows its error as s / n pixels,
 // n being the distance from the eye to the nearest vertex of that level's own geometry (by
 // the chain's contract the error is 1 px at s). Prints per path the worst and mean worst
-// error, the triangles drawn as a share of level 0 and the drawables.
+// error, the triangles drawn as a share of level 0 and the drawables; with --estimate REF, also
+// the share the per-cluster estimate of REF's chain draws (cluster_estimate.h) and the ratio of
+// the two; with --walk-csv, every walk point's figures.
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
 #include <osg/Geometry>
@@ -16,10 +18,15 @@
 #include <osg/TriangleIndexFunctor>
 #include <osgDB/ReadFile>
 
+#include <CLI/CLI.hpp>
+
+#include "cluster_estimate.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -139,34 +146,112 @@ std::vector<Path> paths(const osg::BoundingBox& box)
     return {inside, walk, approach};
 }
 
-int measure(const std::string& file)
+// Where the walk's rows go: one per eye point and measured file.
+class WalkCsv {
+public:
+    bool open(const std::string& path)
+    {
+        file_ = std::fopen(path.c_str(), "w");
+        if (file_)
+            std::fputs("file,index,x,y,z,triangles_share,worst_px,drawables,estimate_share\n", file_);
+        return file_ != nullptr;
+    }
+    ~WalkCsv()
+    {
+        if (file_)
+            std::fclose(file_);
+    }
+    bool isOpen() const { return file_ != nullptr; }
+
+    void row(const std::string& model, std::size_t index, const osg::Vec3d& eye, double share,
+             const Frame& frame, const double* estimate)
+    {
+        std::fprintf(file_, "%s,%zu,%.9g,%.9g,%.9g,%.6f,%.4f,%zu,", quoted(model).c_str(), index, eye.x(),
+                     eye.y(), eye.z(), share, frame.worstPx, frame.drawables);
+        if (estimate)
+            std::fprintf(file_, "%.6f", *estimate);
+        std::fputc('\n', file_);
+    }
+
+private:
+    static std::string quoted(const std::string& field)
+    {
+        if (field.find_first_of(",\"\n") == std::string::npos)
+            return field;
+        std::string out = "\"";
+        for (char c : field)
+            out += c == '"' ? std::string("\"\"") : std::string(1, c);
+        return out + "\"";
+    }
+
+    std::FILE* file_ = nullptr;
+};
+
+struct PathTotals {
+    double worst = 0, meanWorst = 0, share = 0, drawables = 0, estimate = 0;
+};
+
+struct Model {
+    std::string file;
+    osg::ref_ptr<osg::Node> root;
+    double levelZero = 1;
+    std::unique_ptr<ClusterGrid> clusters;  // only with --estimate
+};
+
+PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
+{
+    PathTotals totals;
+    for (std::size_t i = 0; i < path.eyes.size(); ++i) {
+        const osg::Vec3d& eye = path.eyes[i];
+        Drawer drawer(eye);
+        model.root->accept(drawer);
+        const Frame& f = drawer.frame();
+        const double share = double(f.triangles) / model.levelZero;
+        const double estimate = model.clusters ? model.clusters->share(eye) : 0;
+        totals.worst = std::max(totals.worst, f.worstPx);
+        totals.meanWorst += f.worstPx;
+        totals.share += share;
+        totals.drawables += double(f.drawables);
+        totals.estimate += estimate;
+        if (walkCsv)
+            walkCsv->row(model.file, i, eye, share, f, model.clusters ? &estimate : nullptr);
+    }
+    return totals;
+}
+
+void printPath(const Model& model, const Path& path, const PathTotals& totals)
+{
+    const double n = double(path.eyes.size());
+    std::printf("%s %s worst_px %.2f mean_worst_px %.2f triangles_share %.4f drawables_mean %.0f",
+                model.file.c_str(), path.name, totals.worst, totals.meanWorst / n, totals.share / n,
+                totals.drawables / n);
+    if (model.clusters)
+        std::printf(" estimate_share %.4f ratio_to_estimate %.4f", totals.estimate / n,
+                    totals.estimate > 0 ? totals.share / totals.estimate : 0.0);
+    std::printf("\n");
+}
+
+int measure(const std::string& file, const ReferenceChain* reference, WalkCsv& walkCsv)
 {
     osg::ref_ptr<osgDB::Options> options = new osgDB::Options;
     options->setObjectCacheHint(osgDB::Options::CACHE_NONE);
-    osg::ref_ptr<osg::Node> root = osgDB::readRefNodeFile(file, options.get());
-    if (!root) {
+    Model model;
+    model.file = file;
+    model.root = osgDB::readRefNodeFile(file, options.get());
+    if (!model.root) {
         std::fprintf(stderr, "view_error: OpenSceneGraph could not read %s\n", file.c_str());
         return 1;
     }
     Drawer finest(osg::Vec3d(), true);
-    root->accept(finest);
-    const double levelZero = double(std::max<std::size_t>(1, finest.frame().triangles));
+    model.root->accept(finest);
+    model.levelZero = double(std::max<std::size_t>(1, finest.frame().triangles));
     osg::ComputeBoundsVisitor bounds;
-    root->accept(bounds);
+    model.root->accept(bounds);
+    if (reference)
+        model.clusters = std::make_unique<ClusterGrid>(*reference, bounds.getBoundingBox());
     for (const Path& path : paths(bounds.getBoundingBox())) {
-        double worst = 0, meanWorst = 0, share = 0, drawables = 0;
-        for (const osg::Vec3d& eye : path.eyes) {
-            Drawer drawer(eye);
-            root->accept(drawer);
-            const Frame& f = drawer.frame();
-            worst = std::max(worst, f.worstPx);
-            meanWorst += f.worstPx;
-            share += double(f.triangles) / levelZero;
-            drawables += double(f.drawables);
-        }
-        const double n = double(path.eyes.size());
-        std::printf("%s %s worst_px %.2f mean_worst_px %.2f triangles_share %.4f drawables_mean %.0f\n",
-                    file.c_str(), path.name, worst, meanWorst / n, share / n, drawables / n);
+        const bool isWalk = std::string(path.name) == "walk";
+        printPath(model, path, measurePath(model, path, isWalk && walkCsv.isOpen() ? &walkCsv : nullptr));
     }
     return 0;
 }
@@ -175,12 +260,28 @@ int measure(const std::string& file)
 
 int main(int argc, char** argv)
 {
-    if (argc < 2) {
-        std::fprintf(stderr, "usage: %s FILE.flt...\n", argv[0]);
-        return 2;
+    CLI::App app{"The error on screen of OpenFlight LOD models wherever the viewer stands"};
+    std::vector<std::string> files;
+    std::string estimateFile, walkCsvFile;
+    app.add_option("files", files, "OpenFlight files to measure")->required();
+    app.add_option("--estimate", estimateFile,
+                   "a one-LOD-node chain of the same model: compare with its per-cluster estimate");
+    app.add_option("--walk-csv", walkCsvFile, "write one row per walk eye point and file");
+    CLI11_PARSE(app, argc, argv);
+
+    ReferenceChain reference;
+    std::string error;
+    if (!estimateFile.empty() && !readReferenceChain(estimateFile, reference, error)) {
+        std::fprintf(stderr, "view_error: %s\n", error.c_str());
+        return 1;
+    }
+    WalkCsv walkCsv;
+    if (!walkCsvFile.empty() && !walkCsv.open(walkCsvFile)) {
+        std::fprintf(stderr, "view_error: cannot write %s\n", walkCsvFile.c_str());
+        return 1;
     }
     int rc = 0;
-    for (int i = 1; i < argc; ++i)
-        rc |= measure(argv[i]);
+    for (const std::string& file : files)
+        rc |= measure(file, estimateFile.empty() ? nullptr : &reference, walkCsv);
     return rc;
 }

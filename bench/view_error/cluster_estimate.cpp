@@ -1,0 +1,185 @@
+#include "cluster_estimate.h"
+
+#include <osg/Geode>
+#include <osg/Geometry>
+#include <osg/LOD>
+#include <osg/NodeVisitor>
+#include <osg/Transform>
+#include <osg/TriangleIndexFunctor>
+#include <osgDB/ReadFile>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+namespace {
+
+// Counts the non-degenerate triangles of one geometry, keeping their centroids when asked.
+struct TriangleSink {
+    const osg::Vec3Array* vertices = nullptr;
+    osg::Matrixd toWorld;
+    std::vector<osg::Vec3f>* centroids = nullptr;
+    std::size_t triangles = 0;
+
+    void operator()(unsigned a, unsigned b, unsigned c)
+    {
+        if (a == b || b == c || a == c)
+            return;
+        ++triangles;
+        if (centroids) {
+            const osg::Vec3d sum = osg::Vec3d((*vertices)[a]) + osg::Vec3d((*vertices)[b]) +
+                                   osg::Vec3d((*vertices)[c]);
+            centroids->push_back(osg::Vec3f((sum / 3.0) * toWorld));
+        }
+    }
+};
+
+// Walks REF: every LOD child becomes a level (children sharing a range add up), and the
+// children starting at 0 give their triangles' centroids.
+class ChainCollector : public osg::NodeVisitor {
+public:
+    explicit ChainCollector(ReferenceChain& chain) : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN), chain_(chain)
+    {
+        matrices_.push_back(osg::Matrixd::identity());
+    }
+
+    void apply(osg::Transform& t) override
+    {
+        osg::Matrixd local;
+        t.computeLocalToWorldMatrix(local, this);
+        matrices_.push_back(local * matrices_.back());
+        traverse(t);
+        matrices_.pop_back();
+    }
+
+    void apply(osg::LOD& lod) override
+    {
+        if (level_)  // a nested LOD belongs to the level that holds it
+            return traverse(lod);
+        for (unsigned i = 0; i < lod.getNumChildren() && i < lod.getNumRanges(); ++i) {
+            const auto key = std::make_pair(double(lod.getMinRange(i)), double(lod.getMaxRange(i)));
+            level_ = &levels_[key];
+            finest_ = key.first <= 0;
+            lod.getChild(i)->accept(*this);
+            level_ = nullptr;
+        }
+    }
+
+    void apply(osg::Geode& geode) override
+    {
+        if (!level_)
+            return;
+        for (unsigned i = 0; i < geode.getNumDrawables(); ++i)
+            if (const osg::Geometry* g = geode.getDrawable(i)->asGeometry())
+                count(*g);
+    }
+
+    void finish()
+    {
+        for (const auto& [range, triangles] : levels_)
+            chain_.levels.push_back({range.first, range.second, triangles});
+    }
+
+private:
+    void count(const osg::Geometry& g)
+    {
+        const auto* v = dynamic_cast<const osg::Vec3Array*>(g.getVertexArray());
+        if (!v || v->empty())
+            return;
+        osg::TriangleIndexFunctor<TriangleSink> sink;
+        sink.vertices = v;
+        sink.toWorld = matrices_.back();
+        if (finest_)
+            sink.centroids = &chain_.finestCentroids;
+        g.accept(sink);
+        *level_ += sink.triangles;
+    }
+
+    ReferenceChain& chain_;
+    std::vector<osg::Matrixd> matrices_;
+    std::map<std::pair<double, double>, std::size_t> levels_;  // ordered by min range
+    std::size_t* level_ = nullptr;
+    bool finest_ = false;
+};
+
+double gapToRange(double distance, const ReferenceLevel& level)
+{
+    return std::max({level.minRange - distance, distance - level.maxRange, 0.0});
+}
+
+}  // namespace
+
+double ReferenceChain::shareAt(double distance) const
+{
+    const ReferenceLevel* chosen = &levels.front();
+    for (const ReferenceLevel& level : levels) {
+        if (level.minRange <= distance && distance < level.maxRange)
+            return double(level.triangles) / double(levels.front().triangles);
+        if (gapToRange(distance, level) < gapToRange(distance, *chosen))
+            chosen = &level;
+    }
+    return double(chosen->triangles) / double(levels.front().triangles);
+}
+
+bool readReferenceChain(const std::string& file, ReferenceChain& chain, std::string& error)
+{
+    osg::ref_ptr<osgDB::Options> options = new osgDB::Options;
+    options->setObjectCacheHint(osgDB::Options::CACHE_NONE);
+    osg::ref_ptr<osg::Node> root = osgDB::readRefNodeFile(file, options.get());
+    if (!root) {
+        error = "OpenSceneGraph could not read " + file;
+        return false;
+    }
+    ChainCollector collector(chain);
+    root->accept(collector);
+    collector.finish();
+    if (chain.levels.empty() || chain.levels.front().minRange > 0 || chain.levels.front().triangles == 0) {
+        error = file + " has no LOD child with triangles whose range starts at 0";
+        return false;
+    }
+    return true;
+}
+
+ClusterGrid::ClusterGrid(const ReferenceChain& chain, const osg::BoundingBox& box)
+    : chain_(chain), lo_(box.xMin(), box.yMin(), box.zMin())
+{
+    size_ = osg::Vec3d(box.xMax(), box.yMax(), box.zMax()) - lo_;
+    for (const osg::Vec3f& c : chain.finestCentroids)
+        ++triangles_[cellIndex(c)];
+    total_ = chain.finestCentroids.size();
+}
+
+int ClusterGrid::cellIndex(const osg::Vec3f& point) const
+{
+    int index = 0;
+    for (int axis = 2; axis >= 0; --axis) {
+        const double t = size_[axis] > 0 ? (point[axis] - lo_[axis]) / size_[axis] : 0;
+        index = index * kCells + std::clamp(int(std::floor(t * kCells)), 0, kCells - 1);
+    }
+    return index;
+}
+
+double ClusterGrid::distanceToCell(const osg::Vec3d& eye, int cell) const
+{
+    const int along[3] = {cell % kCells, cell / kCells % kCells, cell / (kCells * kCells)};
+    double squared = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double step = size_[axis] / kCells;
+        const double lo = lo_[axis] + step * along[axis], hi = lo + step;
+        const double gap = std::max({lo - eye[axis], eye[axis] - hi, 0.0});
+        squared += gap * gap;
+    }
+    return std::sqrt(squared);
+}
+
+double ClusterGrid::share(const osg::Vec3d& eye) const
+{
+    if (total_ == 0)
+        return 0;
+    double drawn = 0;
+    for (int cell = 0; cell < int(triangles_.size()); ++cell)
+        if (triangles_[cell] > 0)
+            drawn += double(triangles_[cell]) * chain_.shareAt(distanceToCell(eye, cell));
+    return drawn / double(total_);
+}

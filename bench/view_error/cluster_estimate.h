@@ -1,0 +1,50 @@
+// The per-cluster estimate of design.md §8: level 0 of a reference chain split into a grid of
+// clusters over the measured model's box, each cluster drawn at the share of level 0 the
+// chain keeps at the distance from the eye to the cluster's box.
+#pragma once
+
+#include <osg/BoundingBox>
+#include <osg/Vec3d>
+#include <osg/Vec3f>
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+struct ReferenceLevel {
+    double minRange = 0;
+    double maxRange = 0;
+    std::size_t triangles = 0;
+};
+
+// A one-LOD-node chain as OSG reads it: its levels by range and where level 0's triangles lie.
+struct ReferenceChain {
+    std::vector<ReferenceLevel> levels;  // sorted by minRange; levels[0] starts at 0
+    std::vector<osg::Vec3f> finestCentroids;  // world coordinates
+
+    // T_k / T_0 of the level whose range holds the distance, else of the level nearest by range.
+    double shareAt(double distance) const;
+};
+
+// Reads REF; false with a message when OSG cannot read it or it has no level starting at 0.
+bool readReferenceChain(const std::string& file, ReferenceChain& chain, std::string& error);
+
+class ClusterGrid {
+public:
+    static constexpr int kCells = 16;
+
+    ClusterGrid(const ReferenceChain& chain, const osg::BoundingBox& box);
+
+    // The triangles the clusters draw from this eye, as a share of level 0.
+    double share(const osg::Vec3d& eye) const;
+
+private:
+    int cellIndex(const osg::Vec3f& point) const;
+    double distanceToCell(const osg::Vec3d& eye, int cell) const;
+
+    const ReferenceChain& chain_;
+    osg::Vec3d lo_, size_;
+    std::array<std::size_t, kCells * kCells * kCells> triangles_{};
+    std::size_t total_ = 0;
+};
