@@ -21,6 +21,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cluster_estimate.h"
+#include "osg_view_probe.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,91 +32,6 @@
 #include <vector>
 
 namespace {
-
-struct Count {
-    std::size_t triangles = 0;
-    void operator()(unsigned a, unsigned b, unsigned c) { triangles += (a != b && b != c && a != c); }
-};
-
-struct Frame {
-    double worstPx = 0;
-    std::size_t triangles = 0;
-    std::size_t drawables = 0;
-};
-
-// Draws the model from one eye point: which LOD children, what they show.
-class Drawer : public osg::NodeVisitor {
-public:
-    explicit Drawer(const osg::Vec3d& eye, bool finestOnly = false)
-        : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN), eye_(eye), finestOnly_(finestOnly)
-    {
-        matrices_.push_back(osg::Matrixd::identity());
-        switchedIn_.push_back(0);
-    }
-
-    void apply(osg::Transform& t) override
-    {
-        osg::Matrixd local;
-        t.computeLocalToWorldMatrix(local, this);
-        matrices_.push_back(local * matrices_.back());
-        traverse(t);
-        matrices_.pop_back();
-    }
-
-    void apply(osg::LOD& lod) override
-    {
-        const osg::Matrixd& m = matrices_.back();
-        const osg::Vec3d localEye = eye_ * osg::Matrixd::inverse(m);
-        const double d = (localEye - osg::Vec3d(lod.getCenter())).length();
-        const double scale = std::max({osg::Vec3d(m(0, 0), m(0, 1), m(0, 2)).length(),
-                                       osg::Vec3d(m(1, 0), m(1, 1), m(1, 2)).length(),
-                                       osg::Vec3d(m(2, 0), m(2, 1), m(2, 2)).length()});
-        for (unsigned i = 0; i < lod.getNumChildren() && i < lod.getNumRanges(); ++i) {
-            const bool drawn = finestOnly_ ? lod.getMinRange(i) <= 0 && lod.getMaxRange(i) > 0
-                                           : lod.getMinRange(i) <= d && d < lod.getMaxRange(i);
-            if (!drawn)
-                continue;
-            switchedIn_.push_back(lod.getMinRange(i) * scale);
-            lod.getChild(i)->accept(*this);
-            switchedIn_.pop_back();
-        }
-    }
-
-    void apply(osg::Geode& geode) override
-    {
-        for (unsigned i = 0; i < geode.getNumDrawables(); ++i)
-            if (const osg::Geometry* g = geode.getDrawable(i)->asGeometry())
-                draw(*g);
-    }
-
-    const Frame& frame() const { return frame_; }
-
-private:
-    void draw(const osg::Geometry& g)
-    {
-        const auto* v = dynamic_cast<const osg::Vec3Array*>(g.getVertexArray());
-        if (!v || v->empty())
-            return;
-        osg::TriangleIndexFunctor<Count> count;
-        g.accept(count);
-        frame_.triangles += count.triangles;
-        ++frame_.drawables;
-        const double s = switchedIn_.back();
-        if (s <= 0)
-            return;
-        const osg::Matrixd& m = matrices_.back();
-        double nearest = std::numeric_limits<double>::max();
-        for (const osg::Vec3& p : *v)
-            nearest = std::min(nearest, (osg::Vec3d(p) * m - eye_).length());
-        frame_.worstPx = std::max(frame_.worstPx, nearest > 0 ? s / nearest : 1e9);
-    }
-
-    osg::Vec3d eye_;
-    bool finestOnly_;
-    std::vector<osg::Matrixd> matrices_;
-    std::vector<double> switchedIn_;
-    Frame frame_;
-};
 
 struct Path {
     const char* name;
@@ -164,10 +80,10 @@ public:
     bool isOpen() const { return file_ != nullptr; }
 
     void row(const std::string& model, std::size_t index, const osg::Vec3d& eye, double share,
-             const Frame& frame, const double* estimate)
+             const cadlod::test::OsgView& frame, const double* estimate)
     {
         std::fprintf(file_, "%s,%zu,%.9g,%.9g,%.9g,%.6f,%.4f,%zu,", quoted(model).c_str(), index, eye.x(),
-                     eye.y(), eye.z(), share, frame.worstPx, frame.drawables);
+                     eye.y(), eye.z(), share, frame.worstApparentPx, frame.drawables);
         if (estimate)
             std::fprintf(file_, "%.6f", *estimate);
         std::fputc('\n', file_);
@@ -193,7 +109,7 @@ struct PathTotals {
 
 struct Model {
     std::string file;
-    osg::ref_ptr<osg::Node> root;
+    std::unique_ptr<cadlod::test::OsgViewProbe> osg;
     double levelZero = 1;
     std::unique_ptr<ClusterGrid> clusters;  // only with --estimate
 };
@@ -203,13 +119,11 @@ PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
     PathTotals totals;
     for (std::size_t i = 0; i < path.eyes.size(); ++i) {
         const osg::Vec3d& eye = path.eyes[i];
-        Drawer drawer(eye);
-        model.root->accept(drawer);
-        const Frame& f = drawer.frame();
+        const cadlod::test::OsgView f = model.osg->drawFrom({eye.x(), eye.y(), eye.z()});
         const double share = double(f.triangles) / model.levelZero;
         const double estimate = model.clusters ? model.clusters->share(eye) : 0;
-        totals.worst = std::max(totals.worst, f.worstPx);
-        totals.meanWorst += f.worstPx;
+        totals.worst = std::max(totals.worst, f.worstApparentPx);
+        totals.meanWorst += f.worstApparentPx;
         totals.share += share;
         totals.drawables += double(f.drawables);
         totals.estimate += estimate;
@@ -233,23 +147,19 @@ void printPath(const Model& model, const Path& path, const PathTotals& totals)
 
 int measure(const std::string& file, const ReferenceChain* reference, WalkCsv& walkCsv)
 {
-    osg::ref_ptr<osgDB::Options> options = new osgDB::Options;
-    options->setObjectCacheHint(osgDB::Options::CACHE_NONE);
     Model model;
     model.file = file;
-    model.root = osgDB::readRefNodeFile(file, options.get());
-    if (!model.root) {
+    model.osg = std::make_unique<cadlod::test::OsgViewProbe>(file, "");
+    if (!model.osg->loaded()) {
         std::fprintf(stderr, "view_error: OpenSceneGraph could not read %s\n", file.c_str());
         return 1;
     }
-    Drawer finest(osg::Vec3d(), true);
-    model.root->accept(finest);
-    model.levelZero = double(std::max<std::size_t>(1, finest.frame().triangles));
-    osg::ComputeBoundsVisitor bounds;
-    model.root->accept(bounds);
+    model.levelZero = double(std::max<std::size_t>(1, model.osg->finestTriangles()));
+    const auto box = model.osg->bounds();
+    const osg::BoundingBox bounds(box[0][0], box[0][1], box[0][2], box[1][0], box[1][1], box[1][2]);
     if (reference)
-        model.clusters = std::make_unique<ClusterGrid>(*reference, bounds.getBoundingBox());
-    for (const Path& path : paths(bounds.getBoundingBox())) {
+        model.clusters = std::make_unique<ClusterGrid>(*reference, bounds);
+    for (const Path& path : paths(bounds)) {
         const bool isWalk = std::string(path.name) == "walk";
         printPath(model, path, measurePath(model, path, isWalk && walkCsv.isOpen() ? &walkCsv : nullptr));
     }

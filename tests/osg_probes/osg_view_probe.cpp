@@ -199,6 +199,27 @@ private:
     std::set<const osg::Group*> seen_;
 };
 
+class FinestCounter : public osg::NodeVisitor {
+public:
+    FinestCounter() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
+    void apply(osg::LOD& lod) override
+    {
+        for (unsigned i = 0; i < lod.getNumChildren() && i < lod.getNumRanges(); ++i)
+            if (lod.getMinRange(i) <= 0 && lod.getMaxRange(i) > 0)
+                lod.getChild(i)->accept(*this);
+    }
+    void apply(osg::Geode& geode) override
+    {
+        for (unsigned i = 0; i < geode.getNumDrawables(); ++i)
+            if (const osg::Geometry* g = geode.getDrawable(i)->asGeometry()) {
+                osg::TriangleIndexFunctor<Count> count;
+                g->accept(count);
+                triangles += count.triangles;
+            }
+    }
+    std::size_t triangles = 0;
+};
+
 }  // namespace
 
 struct OsgViewProbe::Impl {
@@ -230,6 +251,13 @@ std::vector<OsgLodRanges> OsgViewProbe::lodNodes() const
     LodCollector c;
     impl_->root->accept(c);
     return c.nodes;
+}
+
+std::size_t OsgViewProbe::finestTriangles() const
+{
+    FinestCounter c;
+    impl_->root->accept(c);
+    return c.triangles;
 }
 
 std::array<Point3, 2> OsgViewProbe::bounds() const

@@ -36,6 +36,7 @@ public:
     OsgView drawFrom(const Point3& eye) const;
     std::vector<OsgLodRanges> lodNodes() const;
     std::array<Point3, 2> bounds() const;
+    std::size_t finestTriangles() const;  // every LOD node at its child drawn from up close
     ~OsgViewProbe();
 
 private:
