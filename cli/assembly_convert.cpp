@@ -1,13 +1,16 @@
 #include "assembly_convert.h"
 
 #include "cli_errors.h"
+#include "part_chunks.h"
 #include "progress_bar.h"
 
+#include "lod/cluster_tree.h"  // Box3
 #include "lod/lod_chain.h"
 #include "lod/nearest_point.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace cadlod::cli {
@@ -31,6 +34,28 @@ std::vector<std::size_t> placedGeometries(const std::vector<vrml::Placement>& pl
         if (definitionOf.emplace(p.geometry, order.size()).second)
             order.push_back(p.geometry);
     return order;
+}
+
+// The box of every placement's geometry, where it is placed.
+Box3 placedBox(const vrml::Assembly& assembly, const std::vector<vrml::Placement>& placements)
+{
+    std::vector<Box3> local(assembly.geometries.size());
+    for (std::size_t g = 0; g < assembly.geometries.size(); ++g)
+        for (const vrml::Part& part : assembly.geometries[g].parts)
+            for (const auto& p : part.positions)
+                local[g].add(std::array<double, 3>{p[0], p[1], p[2]});
+    Box3 placed;
+    for (const vrml::Placement& p : placements) {
+        const Box3& b = local[p.geometry];
+        if (b.empty())
+            continue;
+        for (int corner = 0; corner < 8; ++corner) {
+            const vrml::Vec3 w = p.matrix.transformPoint(
+                {corner & 1 ? b.hi[0] : b.lo[0], corner & 2 ? b.hi[1] : b.lo[1], corner & 4 ? b.hi[2] : b.lo[2]});
+            placed.add(std::array<double, 3>{w.x, w.y, w.z});
+        }
+    }
+    return placed;
 }
 
 // How far each level's vertices reach from its centre.
@@ -89,7 +114,7 @@ void holdAtNearestPoint(std::vector<flt::Level>& levels, LodSetResult& result)
 }
 
 PartChain convertPart(vrml::Geometry& geometry, const ImportSettings& settings, const BuildChain& buildChain,
-                      flt::PartDefinition& definition, std::size_t& skippedFaces)
+                      double smallestChunkedRadius, flt::PartDefinition& definition, std::size_t& skippedFaces)
 {
     PartChain chain;
     chain.name = geometry.name;
@@ -109,6 +134,7 @@ PartChain convertPart(vrml::Geometry& geometry, const ImportSettings& settings, 
     skippedFaces += skipped;
     definition.name = geometry.name;
     definition.levels = std::move(levels.levels);
+    definition.chunks = chunkLevels(definition.levels, smallestChunkedRadius);
     holdAtNearestPoint(definition.levels, chain.result);
     return chain;
 }
@@ -116,7 +142,7 @@ PartChain convertPart(vrml::Geometry& geometry, const ImportSettings& settings, 
 }  // namespace
 
 AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelName, const ImportSettings& settings,
-                                   const BuildChain& buildChain)
+                                   const BuildChain& buildChain, bool chunkLargeParts)
 {
     // What no shared node holds is placed under the input file's name.
     const std::vector<vrml::Placement> placements =
@@ -126,6 +152,8 @@ AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelN
     AssemblyConversion out;
     out.model.name = modelName;
     out.model.definitions.resize(geometries.size());
+    const double chunkedRadius = chunkLargeParts ? kChunkedPartShare * placedBox(scene.assembly, placements).halfDiagonal()
+                                                 : std::numeric_limits<double>::infinity();
     std::size_t done = 0, total = 0;
     for (std::size_t g : geometries)
         total += scene.assembly.geometries[g].triangleCount();
@@ -136,7 +164,8 @@ AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelN
                             int(100 * (done + triangles) / std::max<std::size_t>(total, 1)),
                             "part " + std::to_string(d + 1) + "/" + std::to_string(geometries.size()) + " " +
                                 geometry.name);
-        out.parts.push_back(convertPart(geometry, settings, buildChain, out.model.definitions[d], out.skippedFaces));
+        out.parts.push_back(convertPart(geometry, settings, buildChain, chunkedRadius, out.model.definitions[d],
+                                        out.skippedFaces));
         progress::endSpan();
         done += triangles;
     }

@@ -33,9 +33,10 @@ struct AssemblyConversion {
     std::size_t skippedFaces = 0;  // degenerate faces the level conversion dropped
 };
 
-// `modelName` names the model (its header and root group). Throws InputError when a part
+// `modelName` names the model (its header and root group). `chunkLargeParts`: a part large
+// in the assembly is written in chunks (part_chunks.h). Throws InputError when a part
 // cannot be converted (its name in the message).
 AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelName, const ImportSettings& settings,
-                                   const BuildChain& buildChain);
+                                   const BuildChain& buildChain, bool chunkLargeParts = false);
 
 }  // namespace cadlod::cli

@@ -223,9 +223,11 @@ nlohmann::json assemblyReportJson(const ConvertArgs& a, const AssemblyConversion
 
 // --hlod auto: the placements in clusters with merged proxies, when the chain plans the
 // levels (a level list has no error to switch a proxy by) and there are parts to cluster.
+bool hierarchical(const ConvertArgs& a) { return a.hlod == "auto" && a.lod == "auto"; }
+
 bool clustersPlacements(const ConvertArgs& a, const AssemblyConversion& c)
 {
-    return a.hlod == "auto" && a.lod == "auto" && c.model.placements.size() > 1;
+    return hierarchical(a) && c.model.placements.size() > 1;
 }
 
 HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, const ImportSettings& importing)
@@ -278,7 +280,8 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     AssemblyConversion c = convertAssembly(scene, baseName(a.output), importing,
                                            [&](CoreMesh& original, LevelStore& store) {
                                                return buildLevels(a, original, store);
-                                           });
+                                           },
+                                           hierarchical(a));
     const HierarchyStats hierarchy = clusterPlacements(a, c, importing);
     c.model.units = saving.units;
     const double lodSeconds = secondsSince(t1);

@@ -136,8 +136,19 @@ private:
 
     void writeLevelsOf(const WrittenForm& form)
     {
-        const std::vector<Level>& levels = model_.definitions[form.first].levels;
-        levels_.writeLevels(levels, writesLodRecords(levels), form.second);
+        const PartDefinition& d = model_.definitions[form.first];
+        if (d.chunks.empty()) {
+            levels_.writeLevels(d.levels, writesLodRecords(d.levels), form.second);
+            return;
+        }
+        for (std::size_t c = 0; c < d.chunks.size(); ++c) {
+            const std::string name = d.name + " chunk " + std::to_string(c + 1);
+            writeGroup(w_, name);
+            writeLongIdIfNeeded(w_, name);
+            writePush(w_);
+            levels_.writeLevels(d.chunks[c], true, form.second);
+            writePop(w_);
+        }
     }
 
     const InstancedModel& model_;
@@ -185,11 +196,15 @@ bool validate(const InstancedModel& model, const WriteOptions& options, std::str
         error = "an instanced model is written with Mesh records only";
         return false;
     }
-    for (const PartDefinition& d : model.definitions)
-        if (!validateLevels(d.levels, error)) {
+    for (const PartDefinition& d : model.definitions) {
+        bool valid = validateLevels(d.levels, error);
+        for (const std::vector<Level>& chunk : d.chunks)
+            valid = valid && validateLevels(chunk, error);
+        if (!valid) {
             error = "part " + d.name + ": " + error;
             return false;
         }
+    }
     if (!validateClusters(model, error))
         return false;
     for (const PartPlacement& p : model.placements)

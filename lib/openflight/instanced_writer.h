@@ -21,6 +21,9 @@ namespace cadlod::flt {
 struct PartDefinition {
     std::string name;
     std::vector<Level> levels;  // finest first, in the part's own frame
+    // Non-empty: what is written in place of `levels`, each chunk (a piece of every level,
+    // switched by its own centre) in a Group of its own.
+    std::vector<std::vector<Level>> chunks;
 };
 
 struct PartPlacement {

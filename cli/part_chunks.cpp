@@ -1,0 +1,152 @@
+#include "part_chunks.h"
+
+#include "lod/cluster_tree.h"  // Box3
+#include "lod/nearest_point.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace cadlod::cli {
+namespace {
+
+Box3 boxOf(const flt::Level& level)
+{
+    Box3 b;
+    for (const flt::Part& part : level.parts)
+        for (const flt::Vec3d& p : part.positions)
+            b.add(p);
+    return b;
+}
+
+double reachFrom(const flt::Vec3d& centre, const flt::Level& level)
+{
+    double r2 = 0;
+    for (const flt::Part& part : level.parts)
+        for (const flt::Vec3d& p : part.positions) {
+            const double dx = p[0] - centre[0], dy = p[1] - centre[1], dz = p[2] - centre[2];
+            r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
+        }
+    return std::sqrt(r2);
+}
+
+class ChunkGrid {
+public:
+    explicit ChunkGrid(const Box3& box) : box_(box)
+    {
+        for (int a = 0; a < 3; ++a)
+            size_[a] = std::max(box.hi[a] - box.lo[a], 1e-300);
+    }
+
+    int cellOf(const flt::Part& part, const flt::Triangle& t) const
+    {
+        int cell = 0;
+        for (int a = 0; a < 3; ++a) {
+            const double c =
+                (part.positions[t[0]][a] + part.positions[t[1]][a] + part.positions[t[2]][a]) / 3.0 - box_.lo[a];
+            const int i = std::clamp(int(c / size_[a] * kChunksPerAxis), 0, kChunksPerAxis - 1);
+            cell = cell * kChunksPerAxis + i;
+        }
+        return cell;
+    }
+
+private:
+    Box3 box_;
+    std::array<double, 3> size_{};
+};
+
+// Level `level`'s triangles in each cell, every part with its own vertex pool.
+std::map<int, flt::Level> splitLevel(const flt::Level& level, const ChunkGrid& grid)
+{
+    std::map<int, flt::Level> cells;
+    for (const flt::Part& part : level.parts) {
+        std::map<int, std::vector<std::uint32_t>> remaps;
+        for (std::size_t t = 0; t < part.triangles.size(); ++t) {
+            const int cell = grid.cellOf(part, part.triangles[t]);
+            flt::Level& out = cells[cell];
+            std::vector<std::uint32_t>& remap = remaps[cell];
+            if (remap.empty()) {
+                remap.assign(part.positions.size(), std::numeric_limits<std::uint32_t>::max());
+                flt::Part copy;
+                static_cast<PartIdentity&>(copy) = part;
+                out.parts.push_back(std::move(copy));
+            }
+            flt::Part& piece = out.parts.back();
+            flt::Triangle tri{};
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t v = part.triangles[t][k];
+                if (remap[v] == std::numeric_limits<std::uint32_t>::max()) {
+                    remap[v] = std::uint32_t(piece.positions.size());
+                    piece.positions.push_back(part.positions[v]);
+                    if (part.hasNormals())
+                        piece.normals.push_back(part.normals[v]);
+                    if (part.hasUvs())
+                        piece.uvs.push_back(part.uvs[v]);
+                    if (part.hasVertexColors())
+                        piece.vertexColors.push_back(part.vertexColors[v]);
+                }
+                tri[k] = remap[v];
+            }
+            piece.triangles.push_back(tri);
+            if (part.hasTriangleColors())
+                piece.triangleColors.push_back(part.triangleColors[t]);
+        }
+    }
+    return cells;
+}
+
+// The chunk's levels, each from where it holds at the chunk's nearest point.
+std::vector<flt::Level> chunkChain(std::vector<flt::Level> levels, const std::string& name)
+{
+    Box3 box;
+    for (const flt::Level& l : levels)
+        box.add(boxOf(l));
+    const flt::Vec3d centre = box.center();
+    std::vector<double> reach;
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+        levels[k].center = centre;
+        levels[k].name = name + " LOD" + std::to_string(k);
+        reach.push_back(reachFrom(centre, levels[k]));
+    }
+    holdAtNearestPoint(levels, reach);
+    return levels;
+}
+
+}  // namespace
+
+std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius)
+{
+    if (levels.size() < 2)
+        return {};
+    const Box3 box = boxOf(levels.front());
+    const double radius = reachFrom(box.center(), levels.front());
+    // Chunks help where the part's first simplified level waits for the nearest-point floor.
+    if (radius < smallestRadius || levels[1].switchOut >= (kNearestPointReach - 1) * radius)
+        return {};
+    const ChunkGrid grid(box);
+    std::vector<std::map<int, flt::Level>> split;
+    std::map<int, bool> cells;
+    for (const flt::Level& level : levels) {
+        split.push_back(splitLevel(level, grid));
+        for (const auto& entry : split.back())
+            cells[entry.first] = true;
+    }
+    if (split.front().size() < 2)
+        return {};
+    std::vector<std::vector<flt::Level>> chunks;
+    for (const auto& entry : cells) {
+        std::vector<flt::Level> chain;
+        for (std::size_t k = 0; k < levels.size(); ++k) {
+            const auto found = split[k].find(entry.first);
+            flt::Level l = found != split[k].end() ? found->second : flt::Level{};
+            l.switchIn = levels[k].switchIn;
+            l.switchOut = levels[k].switchOut;
+            chain.push_back(std::move(l));
+        }
+        chunks.push_back(chunkChain(std::move(chain), levels.front().name + " chunk " + std::to_string(entry.first)));
+    }
+    return chunks;
+}
+
+}  // namespace cadlod::cli

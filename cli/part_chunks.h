@@ -1,0 +1,29 @@
+// A large part seen from up close, in chunks (design.md §5, HLOD below the part): a viewer
+// beside a long housing is near one end of it and far from the other, but the part's one LOD
+// node switches by the distance to its centre, so it must hold its finest level until the
+// viewer is several radii off (lod/nearest_point.h). Cut into a grid of chunks, each level's
+// triangles go to the chunk of their centroid; each chunk is an LOD node of its own, with its
+// own centre and reach, so the chunks away from the viewer coarsen early. The levels are the
+// part's own chain, simplified whole: only the switch distances are the chunk's. Where two
+// chunks show different levels their border may open by up to both levels' errors, each
+// within the pixel error where it is drawn.
+#pragma once
+
+#include "openflight/lod_model.h"
+
+#include <vector>
+
+namespace cadlod::cli {
+
+// Chunks of at most this share of the part's box, along each axis.
+inline constexpr int kChunksPerAxis = 4;
+// A part is cut when its radius is at least this share of the assembly's: smaller parts
+// are as small as the chunks would be, and chunks of them would only add draw calls.
+inline constexpr double kChunkedPartShare = 1.0 / 16.0;
+
+// `levels`: the part's chain, finest first, each switched in where its error projects to the
+// pixel error at the centre (not yet held at the nearest point). Empty when chunks would not
+// let any level switch nearer, or the part's radius is below `smallestRadius`.
+std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius);
+
+}  // namespace cadlod::cli
