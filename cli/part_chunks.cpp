@@ -33,10 +33,17 @@ double reachFrom(const flt::Vec3d& centre, const flt::Level& level)
 
 class ChunkGrid {
 public:
+    // As many cells along an axis as it is long against the longest, kChunksPerAxis at most.
     explicit ChunkGrid(const Box3& box) : box_(box)
     {
+        double longest = 0;
         for (int a = 0; a < 3; ++a)
+            longest = std::max(longest, box.hi[a] - box.lo[a]);
+        for (int a = 0; a < 3; ++a) {
             size_[a] = std::max(box.hi[a] - box.lo[a], 1e-300);
+            cells_[a] = std::clamp(int(std::lround(kChunksPerAxis * size_[a] / std::max(longest, 1e-300))), 1,
+                                   kChunksPerAxis);
+        }
     }
 
     int cellOf(const flt::Part& part, const flt::Triangle& t) const
@@ -45,7 +52,7 @@ public:
         for (int a = 0; a < 3; ++a) {
             const double c =
                 (part.positions[t[0]][a] + part.positions[t[1]][a] + part.positions[t[2]][a]) / 3.0 - box_.lo[a];
-            const int i = std::clamp(int(c / size_[a] * kChunksPerAxis), 0, kChunksPerAxis - 1);
+            const int i = std::clamp(int(c / size_[a] * cells_[a]), 0, cells_[a] - 1);
             cell = cell * kChunksPerAxis + i;
         }
         return cell;
@@ -54,6 +61,7 @@ public:
 private:
     Box3 box_;
     std::array<double, 3> size_{};
+    std::array<int, 3> cells_{};
 };
 
 // Level `level`'s triangles in each cell, every part with its own vertex pool.
