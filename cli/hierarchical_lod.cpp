@@ -197,8 +197,7 @@ private:
             return;  // its one part or cluster is drawn as itself
         // The error a proxy may show where it can first be drawn, at its nearest point.
         const double nearest = switchAtNearestPoint(0.0, work.radius);
-        const double allowance =
-            kProxyInputShare * errorBudgetAt(nearest - work.radius, options_.view);
+        const double allowance = kProxyInputShare * detail::errorBudgetAt(nearest - work.radius, options_.view);
         MergedParts merged(work.centre);
         double inputError = 0;
         gather(n, allowance, merged, inputError);
@@ -262,8 +261,6 @@ private:
                 return l;
         return local < levels.front().switchIn ? levels.front() : levels.back();
     }
-
-    double errorBudgetAt(double d, const ViewParams& view) const { return detail::errorBudgetAt(d, view); }
 
     // What cluster n holds, each at its coarsest level within `allowance`.
     void gather(std::size_t n, double allowance, MergedParts& merged, double& inputError) const

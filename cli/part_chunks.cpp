@@ -33,7 +33,7 @@ double reachFrom(const flt::Vec3d& centre, const flt::Level& level)
 
 class ChunkGrid {
 public:
-    // As many cells along an axis as it is long against the longest, kChunksPerAxis at most.
+    // kChunksPerAxis cells along every axis but a thin one (a plate's thickness): one there.
     explicit ChunkGrid(const Box3& box) : box_(box)
     {
         double longest = 0;
@@ -41,8 +41,7 @@ public:
             longest = std::max(longest, box.hi[a] - box.lo[a]);
         for (int a = 0; a < 3; ++a) {
             size_[a] = std::max(box.hi[a] - box.lo[a], 1e-300);
-            cells_[a] = std::clamp(int(std::lround(kChunksPerAxis * size_[a] / std::max(longest, 1e-300))), 1,
-                                   kChunksPerAxis);
+            cells_[a] = size_[a] * kChunksPerAxis < longest ? 1 : kChunksPerAxis;
         }
     }
 
