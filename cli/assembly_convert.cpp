@@ -62,15 +62,8 @@ Box3 placedBox(const vrml::Assembly& assembly, const std::vector<vrml::Placement
 std::vector<double> reachOf(const std::vector<flt::Level>& levels)
 {
     std::vector<double> reach;
-    for (const flt::Level& level : levels) {
-        double r2 = 0;
-        for (const flt::Part& part : level.parts)
-            for (const flt::Vec3d& p : part.positions) {
-                const double dx = p[0] - level.center[0], dy = p[1] - level.center[1], dz = p[2] - level.center[2];
-                r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
-            }
-        reach.push_back(std::sqrt(r2));
-    }
+    for (const flt::Level& level : levels)
+        reach.push_back(level.reachFrom(level.center));
     return reach;
 }
 

@@ -47,17 +47,6 @@ Box3 placedBox(const flt::Level& level, const flt::Mat4d& m)
     return placed;
 }
 
-double reachFrom(const Vec3d& centre, const flt::Level& level)
-{
-    double r2 = 0;
-    for (const flt::Part& part : level.parts)
-        for (const Vec3d& p : part.positions) {
-            const double dx = p[0] - centre[0], dy = p[1] - centre[1], dz = p[2] - centre[2];
-            r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
-        }
-    return std::sqrt(r2);
-}
-
 // A level a cluster may be drawn as: in model coordinates, its error against the parts it
 // stands for, and how far its vertices reach from the cluster's centre.
 struct Candidate {
@@ -316,7 +305,7 @@ private:
             candidate.level = std::move(levels.levels[k]);
             moveTo(candidate.level, work.centre);
             candidate.error = inputError + result.levels[k].hausdorffMax;
-            candidate.reach = reachFrom(work.centre, candidate.level);
+            candidate.reach = candidate.level.reachFrom(work.centre);
             work.candidates.push_back(std::move(candidate));
         }
     }

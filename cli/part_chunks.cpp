@@ -20,17 +20,6 @@ Box3 boxOf(const flt::Level& level)
     return b;
 }
 
-double reachFrom(const flt::Vec3d& centre, const flt::Level& level)
-{
-    double r2 = 0;
-    for (const flt::Part& part : level.parts)
-        for (const flt::Vec3d& p : part.positions) {
-            const double dx = p[0] - centre[0], dy = p[1] - centre[1], dz = p[2] - centre[2];
-            r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
-        }
-    return std::sqrt(r2);
-}
-
 class ChunkGrid {
 public:
     // kChunksPerAxis cells along every axis but a thin one (a plate's thickness): one there.
@@ -114,7 +103,7 @@ std::vector<flt::Level> chunkChain(std::vector<flt::Level> levels, const std::st
     for (std::size_t k = 0; k < levels.size(); ++k) {
         levels[k].center = centre;
         levels[k].name = name + " LOD" + std::to_string(k);
-        reach.push_back(reachFrom(centre, levels[k]));
+        reach.push_back(levels[k].reachFrom(centre));
     }
     holdAtNearestPoint(levels, reach);
     return levels;
@@ -127,7 +116,7 @@ std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& 
     if (levels.size() < 2)
         return {};
     const Box3 box = boxOf(levels.front());
-    const double radius = reachFrom(box.center(), levels.front());
+    const double radius = levels.front().reachFrom(box.center());
     // Chunks help where the part's first simplified level waits for the nearest-point floor.
     if (radius < smallestRadius || levels[1].switchOut >= (kNearestPointReach - 1) * radius)
         return {};

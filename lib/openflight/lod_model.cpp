@@ -1,5 +1,8 @@
 #include "openflight/lod_model.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace cadlod::flt {
 
 std::size_t Level::triangleCount() const
@@ -8,6 +11,17 @@ std::size_t Level::triangleCount() const
     for (const Part& p : parts)
         n += p.triangles.size();
     return n;
+}
+
+double Level::reachFrom(const Vec3d& point) const
+{
+    double r2 = 0;
+    for (const Part& part : parts)
+        for (const Vec3d& p : part.positions) {
+            const double dx = p[0] - point[0], dy = p[1] - point[1], dz = p[2] - point[2];
+            r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
+        }
+    return std::sqrt(r2);
 }
 
 std::size_t LodModel::triangleCount() const

@@ -54,6 +54,7 @@ struct Level {
 
     bool hasRange() const { return switchIn > switchOut; }
     std::size_t triangleCount() const;
+    double reachFrom(const Vec3d& point) const;  // the largest distance from `point` to a vertex
 };
 
 struct LodModel {
