@@ -14,7 +14,9 @@
 
 #include "lod/lod_builder.h"
 #include "lod/lod_chain.h"
+#include "lod/scale_lengths.h"
 #include "openflight/flt_writer.h"
+#include "openflight/scale_lengths.h"
 
 #include <algorithm>
 #include <chrono>
@@ -64,7 +66,9 @@ ViewParams viewOf(const ConvertArgs& a)
 // The fewest Hausdorff samples per side a cluster proxy is measured with.
 constexpr std::size_t kProxySamples = 20000;
 
-LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& store, double nearestDistance = 0.0)
+// `lengthScale` turns the mesh's lengths into metres, for the progress to name distances in.
+LodSetResult buildLevels(const ConvertArgs& a, double lengthScale, CoreMesh& original, LevelStore& store,
+                         double nearestDistance = 0.0)
 {
     const auto newLevel = [&](int) -> CoreMesh& { return store.add(); };
     if (a.lod == "auto") {
@@ -76,7 +80,8 @@ LodSetResult buildLevels(const ConvertArgs& a, CoreMesh& original, LevelStore& s
         o.hausdorffSamples = a.samples;
         applyProtection(a.protection, o.simplify);
         o.runTogether = runOnWorkers;
-        o.distanceUnit = "m";  // the importer scaled the model to metres
+        o.distanceUnit = "m";
+        o.distanceScale = lengthScale;
         o.nearestDistance = nearestDistance;
         if (nearestDistance > 0 && a.samples == 0)  // a proxy: its parts' levels are measured already
             o.hausdorffSamples = std::clamp<std::size_t>(std::size_t(original.fn), kProxySamples, 100000);
@@ -230,7 +235,8 @@ bool clustersPlacements(const ConvertArgs& a, const AssemblyConversion& c)
     return hierarchical(a) && c.model.placements.size() > 1;
 }
 
-HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, const ImportSettings& importing)
+HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, const ImportSettings& importing,
+                                 double lengthScale)
 {
     if (!clustersPlacements(a, c))
         return {};
@@ -238,7 +244,7 @@ HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, co
     options.tree.leafItems = a.clusterParts;
     options.view = viewOf(a);
     return buildHierarchy(c, options, importing, [&](CoreMesh& merged, LevelStore& store, double nearest) {
-        return buildLevels(a, merged, store, nearest);
+        return buildLevels(a, lengthScale, merged, store, nearest);
     });
 }
 
@@ -268,6 +274,15 @@ void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
                  h.inputTriangles);
 }
 
+// The parts, the proxies and the placements in the unit chosen: they were simplified at the
+// power of two nearest to it (vrml::UnitScaling).
+void toUnitChosen(AssemblyConversion& c, double lengthScale)
+{
+    flt::scaleLengths(c.model, lengthScale);
+    for (PartChain& part : c.parts)
+        scaleLengths(part.result, lengthScale);
+}
+
 // An assembly that shares geometry: each distinct part simplified once, placed by instances.
 void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSettings& importing,
                       const SaveSettings& saving, Clock::time_point t0, OutputSet& outputs, const LoadedMesh& loaded)
@@ -277,12 +292,15 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
                                    "--instances expand for Face records");
     const double importSeconds = secondsSince(t0);
     const auto t1 = Clock::now();
-    AssemblyConversion c = convertAssembly(scene, baseName(a.output), importing,
+    const double lengthScale = loaded.lengthScale;
+    const ImportSettings inParts = inMeshUnits(importing, loaded);
+    AssemblyConversion c = convertAssembly(scene, baseName(a.output), inParts,
                                            [&](CoreMesh& original, LevelStore& store) {
-                                               return buildLevels(a, original, store);
+                                               return buildLevels(a, lengthScale, original, store);
                                            },
                                            hierarchical(a));
-    const HierarchyStats hierarchy = clusterPlacements(a, c, importing);
+    const HierarchyStats hierarchy = clusterPlacements(a, c, inParts, lengthScale);
+    toUnitChosen(c, lengthScale);
     c.model.units = saving.units;
     const double lodSeconds = secondsSince(t1);
     const auto t2 = Clock::now();
@@ -322,6 +340,7 @@ void runConvert(const ConvertArgs& a)
         outputs.add(a.report, "--report");
     ImportSettings importing = importSettings(a.import);
     importing.keepInstances = a.instances == "keep";
+    importing.unitScaling = vrml::UnitScaling::PowerOfTwo;
     const SaveSettings saving = saveSettings(a.exporting);
     progress::enable(!a.common.quiet);
     limitThreads(a.common.threads);
@@ -338,7 +357,7 @@ void runConvert(const ConvertArgs& a)
 
     const auto t1 = Clock::now();
     LevelStore store;
-    const LodSetResult result = buildLevels(a, original, store);
+    LodSetResult result = buildLevels(a, loaded.lengthScale, original, store);
     if (!result.ok())
         throw InputError(a.input + ": " + result.error);
     const double lodSeconds = secondsSince(t1);
@@ -349,6 +368,8 @@ void runConvert(const ConvertArgs& a)
         meshes.push_back(m.get());
     std::size_t skipped = 0;
     flt::LodModel model = lodMeshesToModel(meshes, result.levels.front().setId, baseName(a.output), skipped);
+    flt::scaleLengths(model, loaded.lengthScale);
+    scaleLengths(result, loaded.lengthScale);
     model.units = saving.units;
     flt::WriteOptions writeOptions = saving.flt;
     writeOptions.progress = [](int p) { progress::report(p, "Writing OpenFlight"); };

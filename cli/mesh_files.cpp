@@ -85,6 +85,7 @@ vrml::ImportOptions vrmlOptions(const ImportSettings& settings, bool keepInstanc
     options.kicadUnitScale = 0.001;                    // KiCad's millimetres to metres
     options.upAxis = settings.yUpToZUp ? vrml::UpAxis::YUpToZUp : vrml::UpAxis::Keep;
     options.recomputeNormals = settings.recomputeNormals;
+    options.unitScaling = settings.unitScaling;
     if (keepInstances)
         options.instances = vrml::Instances::Keep;
     options.progress = [](double f) { progress::report(int(60 * f), "Reading VRML"); };
@@ -107,6 +108,7 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
     info.kicadHeader = imported.assumed.kicadHeader;
     info.kicadUnitApplied = imported.assumed.kicadUnits;
     info.unit = chooseUnit(settings.unit, info.kicadUnitApplied, settings.defaultUnit, settings.defaultUnitGiven);
+    info.lengthScale = imported.assumed.remainingScale;
     if (!imported.scene.assembly.empty()) {
         info.parts = imported.scene.assembly.geometries.size();
         info.placements = imported.scene.assembly.placementCount();
@@ -114,7 +116,7 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
         return info;
     }
     info.parts = imported.scene.parts.size();
-    info.mergedVertices = sceneToCoreMesh(imported.scene, m, settings);
+    info.mergedVertices = sceneToCoreMesh(imported.scene, m, inMeshUnits(settings, info));
     if (m.fn == 0)
         throw InputError(path + ": no triangles in the scene");
     return info;
@@ -123,7 +125,7 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
 // A VRML model whose size is implausible for its unit is reported when loaded.
 void checkModelSize(CoreMesh& m, LoadedMesh& info)
 {
-    const std::string warning = implausibleSizeWarning(liveDiagonal(m), info.unit);
+    const std::string warning = implausibleSizeWarning(liveDiagonal(m) * info.lengthScale, info.unit);
     if (warning.empty())
         return;
     std::fprintf(stderr, "cadlod: warning: %s\n", warning.c_str());
@@ -190,6 +192,12 @@ void saveFlt(const std::string& path, CoreMesh& m, const SaveSettings& settings)
 }
 
 }  // namespace
+
+ImportSettings inMeshUnits(ImportSettings settings, const LoadedMesh& loaded)
+{
+    settings.mergeTolerance = float(settings.mergeTolerance / loaded.lengthScale);
+    return settings;
+}
 
 InputFormat formatOf(const std::string& path)
 {

@@ -7,6 +7,7 @@
 #include "openflight/lod_model.h"
 #include "unit_choice.h"
 #include "vrml/diagnostics.h"
+#include "vrml/importer.h"
 #include "vrml/scene.h"
 
 #include <string>
@@ -30,6 +31,9 @@ struct ImportSettings {
     bool mergeVertices = true;
     float mergeTolerance = 0.0f;
     bool keepInstances = false;  // VRML: an assembly that shares geometry is kept as placements
+    // VRML: PowerOfTwo reads at the power of two nearest to the unit, so that the simplifier
+    // decides alike in every unit; LoadedMesh::lengthScale is the rest.
+    vrml::UnitScaling unitScaling = vrml::UnitScaling::Exact;
 };
 
 struct LoadedMesh {
@@ -45,7 +49,14 @@ struct LoadedMesh {
     bool kicadHeader = false, kicadUnitApplied = false;
     vrml::Diagnostics findings;
     std::vector<std::string> notes;
+    // What every length of the loaded mesh is multiplied by to be in the unit chosen: not 1
+    // where the unit is applied in part (ImportSettings::unitScaling).
+    double lengthScale = 1.0;
 };
+
+// `settings` for lengths of the loaded mesh: the merge tolerance, given in the unit chosen,
+// in the mesh's own.
+ImportSettings inMeshUnits(ImportSettings settings, const LoadedMesh& loaded);
 
 // Loads `path` into `m` (empty) ready for the simplifier (compact, VF adjacency, face
 // normals, bbox); throws InputError with the reader's message (file:line:col or offset),

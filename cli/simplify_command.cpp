@@ -8,7 +8,10 @@
 #include "output_file.h"
 #include "progress_bar.h"
 
+#include "lod/scale_lengths.h"
 #include "simplify/best_of_trials.h"
+
+#include <vcg/complex/algorithms/update/position.h>
 
 #include <memory>
 
@@ -39,10 +42,19 @@ SimplifyParams paramsOf(const SimplifyArgs& a)
     return p;
 }
 
+// The mesh in the unit chosen: it was simplified at the power of two nearest to it
+// (vrml::UnitScaling).
+void toUnitChosen(CoreMesh& m, const LoadedMesh& loaded)
+{
+    if (loaded.lengthScale != 1.0)
+        vcg::tri::UpdatePosition<CoreMesh>::Scale(m, CoreMesh::ScalarType(loaded.lengthScale));
+}
+
 void runSimplify(const SimplifyArgs& a)
 {
     checkWritable(a.output, a.common.force);
-    const ImportSettings importing = importSettings(a.import);
+    ImportSettings importing = importSettings(a.import);
+    importing.unitScaling = vrml::UnitScaling::PowerOfTwo;
     const SaveSettings saving = saveSettings(a.exporting);
     progress::enable(!a.common.quiet);
     limitThreads(a.common.threads);
@@ -51,6 +63,7 @@ void runSimplify(const SimplifyArgs& a)
     // 0 % asks to remove nothing: the mesh is written as loaded (a conversion), unless a
     // maximum error is what bounds the run.
     if (a.reductionGiven && a.reduction == 0 && a.maxError == 0) {
+        toUnitChosen(m, loaded);
         saveMesh(a.output, m, saving);
         progress::finish();
         if (!a.common.quiet)
@@ -59,9 +72,11 @@ void runSimplify(const SimplifyArgs& a)
             printFindingsSummary(loaded);
         return;
     }
-    const SimplifyStats stats = bestOfTrials(m, paramsOf(a), progress::callback, runOnWorkers);
+    SimplifyStats stats = bestOfTrials(m, paramsOf(a), progress::callback, runOnWorkers);
     if (!stats.ok)
         throw InputError(a.input + ": " + stats.message);
+    toUnitChosen(m, loaded);
+    scaleLengths(stats, loaded.lengthScale);
     saveMesh(a.output, m, saving);
     progress::finish();
     if (!a.common.quiet && stats.stoppedBy.empty())  // nothing to do: the message says why

@@ -66,6 +66,7 @@ struct LodChainOptions {
     int setId = 1;
     RunTogether runTogether;          // measuring a level beside the next collapses; empty: in sequence
     std::string distanceUnit = "model units";  // how the progress names distances
+    double distanceScale = 1.0;                // ... after multiplying them by this
     // > 0: the first level is planned for this distance when it is farther than the usual
     // first distance; a cluster proxy, never drawn nearer, needs no level before it.
     double nearestDistance = 0.0;
@@ -81,8 +82,6 @@ inline constexpr double kFarFieldPixels = 64.0;
 inline constexpr double kChainMinCompactness = 0.05;
 // Where the model is this many pixels high, a tetrahedron per component replaces its box.
 inline constexpr double kTetrahedronPixels = 2.0;
-// Switch-in distance of the last level when the model is never culled.
-inline constexpr double kNeverCulled = 1e30;
 // The first level is planned this many times closer than where the model fills the view.
 inline constexpr double kCloseUpFactor = 32.0;
 

@@ -238,7 +238,7 @@ private:
             pieces_.startFarField();
         if (progress_ && planned) {  // the step halfway to the next level is part of it
             char text[120];
-            std::snprintf(text, sizeof text, "Simplifying for %.3g %s and beyond (about %d levels)", d,
+            std::snprintf(text, sizeof text, "Simplifying for %.3g %s and beyond (about %d levels)", d * options_.distanceScale,
                           options_.distanceUnit.c_str(), plannedLevels_);
             progress_(100 * std::min(k, plannedLevels_) / (plannedLevels_ + 1), text);
         }

@@ -7,6 +7,9 @@
 
 namespace cadlod {
 
+// Switch-in distance of the last level when the model is never culled.
+inline constexpr double kNeverCulled = 1e30;
+
 struct LodLevel {
     int setId = 0;             // layers with the same setId form one LOD set
     int level = 0;             // 0 = original, finest

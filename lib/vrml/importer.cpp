@@ -118,6 +118,8 @@ struct LoadedFile {
     ParsedFile parsed;
 };
 
+double nearestPowerOfTwo(double scale) { return std::exp2(std::round(std::log2(scale))); }
+
 std::string directoryOf(const std::string& path)
 {
     const fs::path parent = fs::path(path).parent_path();
@@ -223,7 +225,9 @@ private:
         a.kicadUnits = kicad;
         a.fileScale = a.kicadUnits ? 2.54 : 1.0;
         const double unit = a.kicadUnits && options_.kicadUnitScale > 0 ? options_.kicadUnitScale : options_.unitScale;
-        const double s = unit * a.fileScale;
+        const double wanted = unit * a.fileScale;
+        const double s = options_.unitScaling == UnitScaling::PowerOfTwo ? nearestPowerOfTwo(wanted) : wanted;
+        a.remainingScale = wanted / s;
         const Mat4 scale = Mat4::scale({s, s, s});
         ctx_.frame = scale;
         ctx_.frameInverse = Mat4::scale({1 / s, 1 / s, 1 / s});

@@ -21,6 +21,13 @@ enum class UpAxis { Keep, YUpToZUp };
 // and its placements (Scene::assembly); a file that shares no geometry is read expanded.
 enum class Instances { Expand, Keep };
 
+// How the unit scale reaches the coordinates. Exact: all of it is multiplied in. PowerOfTwo:
+// only the power of two nearest to it, the rest left to the caller
+// (ImportAssumptions::remainingScale). A power of two changes a float's exponent and none of
+// its bits, so one file gives the same coordinates up to that power in any unit, and a
+// simplifier that measures only relative lengths decides the same in every unit.
+enum class UnitScaling { Exact, PowerOfTwo };
+
 struct ImportOptions {
     double unitScale = 1.0;            // applied to the world transform (e.g. 0.001: mm -> m)
     UpAxis upAxis = UpAxis::Keep;      // YUpToZUp: rotate +90 degrees about X, (x, y, z) -> (x, -z, y)
@@ -31,6 +38,7 @@ struct ImportOptions {
     // The scale applied to a KiCad file's millimetres instead of unitScale (e.g. 0.001 to
     // metres), so a caller need not know beforehand which files are KiCad's; 0: unitScale.
     double kicadUnitScale = 0.0;
+    UnitScaling unitScaling = UnitScaling::Exact;
     bool recomputeNormals = false;     // ignore file normals, use creaseAngle
     Instances instances = Instances::Expand;
     // Keep: the most placements the assembly may expand to (a file that USEs groups of USEs
@@ -54,6 +62,9 @@ struct ImportAssumptions {
     bool kicadUnits = false;   // ... and 2.54 applied (detectKicadUnits)
     double fileScale = 1.0;    // 2.54 for KiCad, else 1 (before unitScale)
     UpAxis upAxis = UpAxis::Keep;
+    // The part of the unit scale not in the coordinates (UnitScaling::PowerOfTwo), for the
+    // caller to multiply every length it writes by; 1 with UnitScaling::Exact.
+    double remainingScale = 1.0;
     std::string describe(double unitScale) const;  // one sentence
 };
 

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -140,6 +141,104 @@ TEST(CliUnits, UpAxisYTurnsTheModelToZUpAndIsInTheReport)
                          "y", "-q"}).exitCode, 0);
     EXPECT_NEAR(extentOf(dir + "/tall.ply")[2], 3, 1e-5);
     EXPECT_EQ(runCadlod({"convert", dir + "/tall.wrl", "-o", dir + "/x.flt", "--up-axis", "x"}).exitCode, 2);
+}
+
+// One input converted in `unit` with the default chain: the report and the model's size.
+struct InUnit {
+    std::string unit;
+    double metres = 1.0;  // of one file unit
+    Converted converted;
+    std::uintmax_t bytes = 0;
+};
+
+InUnit convertIn(const std::string& in, const std::string& dir, const std::string& unit, double metres)
+{
+    InUnit r{unit, metres, {}, 0};
+    const std::string out = dir + "/" + unit + ".flt", report = dir + "/" + unit + ".json";
+    r.converted.run = runCadlod({"convert", in, "-o", out, "--report", report, "--unit", unit, "-q"});
+    if (r.converted.run.exitCode == 0) {
+        r.converted.report = nlohmann::json::parse(readFile(report));
+        r.bytes = readFile(out).size();
+    }
+    return r;
+}
+
+// A length of the report in file units.
+double inFileUnits(const nlohmann::json& length, const InUnit& r) { return length.get<double>() / r.metres; }
+
+void expectSameLevels(const nlohmann::json& levels, const nlohmann::json& reference, const InUnit& r,
+                      const InUnit& ref)
+{
+    ASSERT_EQ(levels.size(), reference.size()) << r.unit << " against " << ref.unit;
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+        const nlohmann::json &l = levels[k], &e = reference[k];
+        SCOPED_TRACE(r.unit + " level " + std::to_string(k));
+        EXPECT_EQ(l.at("faces"), e.at("faces"));
+        const double error = inFileUnits(e.at("hausdorffMax"), ref);
+        EXPECT_NEAR(inFileUnits(l.at("hausdorffMax"), r), error, 1e-9 * error + 1e-12);
+        const double out = inFileUnits(e.at("switchOut"), ref);
+        EXPECT_NEAR(inFileUnits(l.at("switchOut"), r), out, 1e-9 * out);
+        if (e.at("switchIn").is_string())
+            EXPECT_EQ(l.at("switchIn"), e.at("switchIn"));
+        else
+            EXPECT_NEAR(inFileUnits(l.at("switchIn"), r), inFileUnits(e.at("switchIn"), ref),
+                        1e-9 * inFileUnits(e.at("switchIn"), ref));
+    }
+}
+
+const std::vector<std::pair<std::string, double>> kThreeUnits{{"mm", 0.001}, {"0.1in", 0.00254}, {"m", 1.0}};
+
+// Scaling the input must not change the simplification: the shaft in millimetres, in tenths
+// of an inch and in metres gives the same levels of the same triangles, its lengths in
+// proportion, and files of the same size.
+TEST(CliUnits, TheUnitScalesTheLevelsAndChangesNothingElse)
+{
+    const std::string dir = freshDirectory("units_three_scales");
+    std::vector<InUnit> runs;
+    for (const auto& [unit, metres] : kThreeUnits) {
+        runs.push_back(convertIn(kShaft, dir, unit, metres));
+        ASSERT_EQ(runs.back().converted.run.exitCode, 0) << runs.back().converted.run.stderrText;
+    }
+    const InUnit& mm = runs.front();
+    ASSERT_GT(mm.converted.report.at("levels").size(), 3u);
+    for (const InUnit& r : runs) {
+        expectSameLevels(r.converted.report.at("levels"), mm.converted.report.at("levels"), r, mm);
+        EXPECT_NEAR(inFileUnits(r.converted.report.at("modelSize"), r), inFileUnits(mm.converted.report.at("modelSize"), mm),
+                    1e-6);
+        EXPECT_EQ(r.bytes, mm.bytes) << r.unit;
+        const std::array<double, 3> e = extentOf(dir + "/" + r.unit + ".flt"), m = extentOf(dir + "/mm.flt");
+        for (int axis = 0; axis < 3; ++axis)
+            EXPECT_NEAR(e[axis] / r.metres, m[axis] / mm.metres, 1e-4 * m[axis] / mm.metres) << r.unit;
+    }
+}
+
+// The same for an assembly that places one part three times: the part's chain, the
+// placements and the clusters' proxies.
+TEST(CliUnits, TheUnitScalesAnAssemblyAndChangesNothingElse)
+{
+    const std::string dir = freshDirectory("units_three_scales_assembly");
+    std::ofstream(dir + "/rack.wrl") << "#VRML V2.0 utf8\n"
+                                     << "Transform { translation 0 0 0 children Inline { url \"" << kShaft << "\" } }\n"
+                                     << "Transform { translation 40 0 0 children Inline { url \"" << kShaft << "\" } }\n"
+                                     << "Transform { translation 0 70 5 rotation 0 0 1 1.2 children Inline { url \""
+                                     << kShaft << "\" } }\n";
+    std::vector<InUnit> runs;
+    for (const auto& [unit, metres] : kThreeUnits) {
+        runs.push_back(convertIn(dir + "/rack.wrl", dir, unit, metres));
+        ASSERT_EQ(runs.back().converted.run.exitCode, 0) << runs.back().converted.run.stderrText;
+    }
+    const InUnit& mm = runs.front();
+    ASSERT_EQ(mm.converted.report.at("parts").size(), 1u);
+    ASSERT_EQ(mm.converted.report.at("output").at("placements"), 3);
+    for (const InUnit& r : runs) {
+        const nlohmann::json& part = r.converted.report.at("parts").at(0);
+        expectSameLevels(part.at("levels"), mm.converted.report.at("parts").at(0).at("levels"), r, mm);
+        EXPECT_EQ(r.converted.report.at("hlod"), mm.converted.report.at("hlod")) << r.unit;
+        EXPECT_EQ(r.bytes, mm.bytes) << r.unit;
+        const std::array<double, 3> e = extentOf(dir + "/" + r.unit + ".flt"), m = extentOf(dir + "/mm.flt");
+        for (int axis = 0; axis < 3; ++axis)
+            EXPECT_NEAR(e[axis] / r.metres, m[axis] / mm.metres, 1e-4 * m[axis] / mm.metres) << r.unit;
+    }
 }
 
 TEST(CliUnits, ReportRefusesAPairInDifferentUnitsOrUnrelated)

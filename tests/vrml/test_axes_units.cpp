@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <cstdlib>
 #include <filesystem>
 
@@ -106,6 +108,40 @@ TEST(AxesAndUnits, KicadUnitScaleAppliesToKicadFilesOnly)
     ASSERT_TRUE(plain.ok()) << plain.error;
     EXPECT_FALSE(plain.assumed.kicadHeader);
     expectPoint(plain.scene.parts[0], 1, 0.394, 0, 0);
+}
+
+// UnitScaling::PowerOfTwo multiplies in the power of two nearest to the unit and leaves the
+// rest to the caller: millimetres, tenths of an inch and metres give the same coordinates
+// up to a power of two, to the bit, and the rest makes up the unit.
+TEST(AxesAndUnits, PowerOfTwoScalingGivesTheSameBitsInEveryUnit)
+{
+    const std::string text = "#VRML V2.0 utf8\nTransform { rotation 0.3 0.4 0.5 0.7 translation 1.1 -2.3 0.7 children "
+                             "Shape { geometry IndexedFaceSet { coord Coordinate { point [ 0.1 0.2 0.3, 7.3 0.01 "
+                             "2.9, -1.7 3.3 0.123 ] } coordIndex [ 0 1 2 ] } } }\n";
+    ImportOptions unscaled;
+    unscaled.unitScaling = UnitScaling::PowerOfTwo;
+    const ImportResult reference = importVrmlText(text, "part.wrl", unscaled);
+    ASSERT_TRUE(reference.ok()) << reference.error;
+    EXPECT_EQ(reference.assumed.remainingScale, 1.0);
+    for (const double unit : {0.001, 0.00254, 0.0254, 1000.0}) {
+        ImportOptions o = unscaled;
+        o.unitScale = unit;
+        const ImportResult r = importVrmlText(text, "part.wrl", o);
+        ASSERT_TRUE(r.ok()) << r.error;
+        const double powerOfTwo = unit / r.assumed.remainingScale;
+        EXPECT_EQ(std::exp2(std::round(std::log2(powerOfTwo))), powerOfTwo) << unit;
+        EXPECT_GT(r.assumed.remainingScale, 0.7) << unit;
+        EXPECT_LT(r.assumed.remainingScale, 1.42) << unit;
+        const auto& p = r.scene.parts[0].positions;
+        const auto& q = reference.scene.parts[0].positions;
+        ASSERT_EQ(p.size(), q.size());
+        for (std::size_t i = 0; i < p.size(); ++i)
+            for (int axis = 0; axis < 3; ++axis)
+                EXPECT_EQ(p[i][axis], float(q[i][axis] * powerOfTwo)) << unit << " vertex " << i;
+    }
+    ImportOptions exact;
+    exact.unitScale = 0.001;
+    EXPECT_EQ(importVrmlText(text, "part.wrl", exact).assumed.remainingScale, 1.0);
 }
 
 // The header must be KiCad's own comment at the top, not the words anywhere in the file.
