@@ -64,6 +64,48 @@ struct ClusterWork {
     std::vector<double> from;
 };
 
+// The colour triangle t is drawn with: its vertices' where they carry one (all three alike,
+// asOneDrawable), else its face's.
+const Rgba& triangleColour(const flt::Part& part, std::size_t t)
+{
+    return part.hasVertexColors() ? part.vertexColors[part.triangles[t][0]] : part.colorOf(t);
+}
+
+// A proxy level as one part whose vertices carry the colours: one Mesh record, so one draw
+// call, however many colours it merged (a Mesh record has one colour of its own). A vertex
+// where colours meet is written once per colour. Far off no one picks a part by its name.
+flt::Level asOneDrawable(flt::Level level)
+{
+    if (level.parts.size() < 2 && (level.parts.empty() || !level.parts.front().hasTriangleColors()))
+        return level;
+    flt::Part one;
+    one.name = "proxy";
+    one.color = level.parts.front().color;
+    const bool normals = std::all_of(level.parts.begin(), level.parts.end(),
+                                     [](const flt::Part& p) { return p.hasNormals(); });
+    for (const flt::Part& part : level.parts) {
+        std::map<std::pair<std::uint32_t, Rgba>, std::uint32_t> index;
+        for (std::size_t t = 0; t < part.triangles.size(); ++t) {
+            const Rgba& colour = triangleColour(part, t);
+            flt::Triangle out;
+            for (int c = 0; c < 3; ++c) {
+                const std::uint32_t v = part.triangles[t][c];
+                const auto [at, added] = index.emplace(std::make_pair(v, colour), std::uint32_t(one.positions.size()));
+                if (added) {
+                    one.positions.push_back(part.positions[v]);
+                    one.vertexColors.push_back(colour);
+                    if (normals)
+                        one.normals.push_back(part.normals[v]);
+                }
+                out[c] = at->second;
+            }
+            one.triangles.push_back(out);
+        }
+    }
+    level.parts.assign(1, std::move(one));
+    return level;
+}
+
 // The parts of some levels, placed, merged into one part per colour about `centre`.
 class MergedParts {
 public:
@@ -83,7 +125,7 @@ private:
     {
         std::map<std::size_t, std::vector<std::uint32_t>> remaps;  // per merged part
         for (std::size_t t = 0; t < part.triangles.size(); ++t) {
-            const std::size_t target = partFor(part.colorOf(t));
+            const std::size_t target = partFor(triangleColour(part, t));
             std::vector<std::uint32_t>& remap = remaps[target];
             remap.resize(part.positions.size(), kUnset);
             vrml::Part& out = parts_[target];
@@ -302,7 +344,7 @@ private:
         flt::LodModel levels = lodMeshesToModel(meshes, result.levels.front().setId, "proxy", skipped);
         for (std::size_t k = 0; k < levels.levels.size() && k < result.levels.size(); ++k) {
             Candidate candidate;
-            candidate.level = std::move(levels.levels[k]);
+            candidate.level = asOneDrawable(std::move(levels.levels[k]));
             moveTo(candidate.level, work.centre);
             candidate.error = inputError + result.levels[k].hausdorffMax;
             candidate.reach = candidate.level.reachFrom(work.centre);
