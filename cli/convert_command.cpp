@@ -340,6 +340,7 @@ void runConvert(const ConvertArgs& a)
         outputs.add(a.report, "--report");
     ImportSettings importing = importSettings(a.import);
     importing.keepInstances = a.instances == "keep";
+    importing.placeParts = importing.keepInstances && hierarchical(a);
     importing.unitScaling = vrml::UnitScaling::PowerOfTwo;
     const SaveSettings saving = saveSettings(a.exporting);
     progress::enable(!a.common.quiet);

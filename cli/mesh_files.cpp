@@ -10,6 +10,7 @@
 #include "output_file.h"
 #include "progress_bar.h"
 #include "convert/scene_to_mesh.h"
+#include "vrml/assembly.h"
 #include "vrml/importer.h"
 
 #include <vcg/complex/algorithms/clean.h>
@@ -109,6 +110,9 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
     info.kicadUnitApplied = imported.assumed.kicadUnits;
     info.unit = chooseUnit(settings.unit, info.kicadUnitApplied, settings.defaultUnit, settings.defaultUnitGiven);
     info.lengthScale = imported.assumed.remainingScale;
+    if (settings.placeParts && assembly && imported.scene.assembly.empty() &&
+        vrml::namedParts(imported.scene.parts) > 1)
+        imported.scene.assembly = vrml::partsPlacedOnce(std::move(imported.scene.parts));
     if (!imported.scene.assembly.empty()) {
         info.parts = imported.scene.assembly.geometries.size();
         info.placements = imported.scene.assembly.placementCount();

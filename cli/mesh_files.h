@@ -31,6 +31,9 @@ struct ImportSettings {
     bool mergeVertices = true;
     float mergeTolerance = 0.0f;
     bool keepInstances = false;  // VRML: an assembly that shares geometry is kept as placements
+    // VRML, with keepInstances: a file that shares nothing but has several parts is kept as
+    // its parts, each placed once (vrml::partsPlacedOnce).
+    bool placeParts = false;
     // VRML: PowerOfTwo reads at the power of two nearest to the unit, so that the simplifier
     // decides alike in every unit; LoadedMesh::lengthScale is the rest.
     vrml::UnitScaling unitScaling = vrml::UnitScaling::Exact;

@@ -4,6 +4,7 @@
 #include <functional>
 #include <limits>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace cadlod::vrml {
 namespace {
@@ -87,6 +88,35 @@ bool Assembly::sharesGeometry() const
     for (std::size_t g = 0; g < geometries.size(); ++g)
         if (!geometries[g].parts.empty() && references[g] > 1) return true;
     return false;
+}
+
+Assembly partsPlacedOnce(std::vector<Part>&& parts)
+{
+    Assembly assembly;
+    assembly.geometries.push_back(Geometry{});
+    std::unordered_map<int, std::size_t> byOwner;
+    for (Part& part : parts) {
+        if (!part.named) {
+            assembly.geometries.front().parts.push_back(std::move(part));
+            continue;
+        }
+        const auto [at, added] = byOwner.emplace(part.owner, assembly.geometries.size());
+        if (added) {
+            assembly.geometries.push_back(Geometry{part.name, {}, {}});
+            assembly.geometries.front().children.push_back({at->second, Mat4::identity(), part.name});
+        }
+        assembly.geometries[at->second].parts.push_back(std::move(part));
+    }
+    parts.clear();
+    return assembly;
+}
+
+std::size_t namedParts(const std::vector<Part>& parts)
+{
+    std::unordered_set<int> owners;
+    for (const Part& part : parts)
+        if (part.named) owners.insert(part.owner);
+    return owners.size();
 }
 
 std::vector<Placement> flattenPlacements(const Assembly& assembly, const std::string& rootName)

@@ -52,6 +52,15 @@ struct Assembly {
     bool sharesGeometry() const;
 };
 
+// A file that shares nothing as an assembly of its parts, each placed once where it stands:
+// one geometry per named part (Part::named; its shapes, one per colour, stay together), in
+// file order; the shapes no DEF names stay in the root. A viewer inside the model then meets
+// LOD nodes the size of parts, not one for the whole model.
+Assembly partsPlacedOnce(std::vector<Part>&& parts);
+
+// How many parts the CAD system named (Part::named) `parts` holds.
+std::size_t namedParts(const std::vector<Part>& parts);
+
 // Every placement of a geometry that has parts, depth first in file order, with unique
 // paths (a repeated path gets "[2]", "[3]"...). The root's placement is named `rootName`.
 std::vector<Placement> flattenPlacements(const Assembly& assembly, const std::string& rootName);

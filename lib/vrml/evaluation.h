@@ -24,6 +24,7 @@ namespace cadlod::vrml {
 struct Owner {
     int id = -1;
     std::string name;
+    bool named = false;  // a DEF'd node: a part the CAD system named
 };
 
 // The part name of a DEF'd node. A node that is also USE'd is several instances of one
@@ -56,7 +57,7 @@ struct EvalContext {
     std::function<void(const std::vector<std::string>& urls, const std::string& where, const Mat4& world,
                        const Owner& owner)> loadInline;
 
-    Owner newOwner(const std::string& name) { return {nextOwnerId++, name}; }
+    Owner newOwner(const std::string& name, bool named = false) { return {nextOwnerId++, name, named}; }
     Part& part(const Owner& owner, const std::array<float, 4>& color, const std::string& texture = {});
     // Whose part a shape's faces go to: `owner` (the nearest DEF'd node above it), else the shape
     // itself, named by `path`. In a shared geometry, such shapes are the faces of one part, named

@@ -116,7 +116,7 @@ private:
 
     void evaluate(const NodePtr& node, State& state, const Owner& owner, const std::string& path, int depth)
     {
-        const Owner here = node->defName.empty() ? owner : ctx_.newOwner(instanceName(*node, owner));
+        const Owner here = node->defName.empty() ? owner : ctx_.newOwner(instanceName(*node, owner), true);
         const std::string& t = node->type;
         const std::string at = path + "/" + t;
         if (t == "Separator") {

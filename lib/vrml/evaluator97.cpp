@@ -92,7 +92,7 @@ private:
 
     void evaluate(const NodePtr& node, const Mat4& world, const Owner& owner, const std::string& path, int depth)
     {
-        const Owner here = node->defName.empty() ? owner : ctx_.newOwner(instanceName(*node, owner));
+        const Owner here = node->defName.empty() ? owner : ctx_.newOwner(instanceName(*node, owner), true);
         const std::string& type = node->type;
         if (type == "Transform" || type == "CADPart") {
             const Mat4 local = transformMatrix(readTransformFields(*node, "scale"));

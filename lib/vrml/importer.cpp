@@ -26,6 +26,8 @@ Part& EvalContext::part(const Owner& owner, const std::array<float, 4>& color, c
     index[key] = parts.size();
     Part& p = parts.emplace_back();
     p.name = owner.name;
+    p.owner = owner.id;
+    p.named = owner.named;
     p.color = color;
     p.texture = texture;
     return p;

@@ -25,6 +25,11 @@ struct Part : PartIdentity {
     std::string texture;              // image file (resolved path) or empty
     std::vector<uint32_t> triangles;  // 3 indices per triangle, counter-clockwise front
     std::vector<Rgba8> faceColors;    // empty or one per triangle
+    // Whose faces these are: the Parts of one owner (one per colour) are one CAD part.
+    // `named`: the owner is a DEF'd node, a part the CAD system named, not a shape named by
+    // its path.
+    int owner = -1;
+    bool named = false;
 
     size_t triangleCount() const { return triangles.size() / 3; }
 };

@@ -44,6 +44,24 @@ std::string writeGrid(const std::string& dir)
     return path;
 }
 
+// The same knobs on a 4 x 4 x 2 grid, each written out in full: a file that shares nothing,
+// as CAD systems export an assembly into one file, each part under its own DEF name.
+std::string writeUnsharedGrid(const std::string& dir)
+{
+    std::ostringstream text;
+    text << "#VRML V2.0 utf8\n";
+    for (int z = 0, n = 0; z < 2; ++z)
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x, ++n)
+                text << "DEF P" << n << " Transform { translation " << 0.08 * x << ' ' << 0.08 * y << ' ' << 0.1 * z
+                     << " children [ Shape { geometry Sphere { radius 0.012 } }\n"
+                        "  Transform { translation 0 0 0.015 children Shape { appearance Appearance { material "
+                        "Material { diffuseColor 1 0 0 } } geometry Cylinder { radius 0.003 height 0.03 } } } ] }\n";
+    const std::string path = dir + "/unshared.wrl";
+    std::ofstream(path) << text.str();
+    return path;
+}
+
 std::vector<Point3> eyePoints(const std::array<Point3, 2>& box)
 {
     const Point3 &lo = box[0], &hi = box[1];
@@ -107,6 +125,46 @@ TEST(CliHierarchicalLod, HoldsTheErrorBoundAndDrawsEveryPlacementOnceWhereverThe
     // Far off, the proxies stand for the 128 knobs (two colours each).
     EXPECT_GE(nearDrawables, std::size_t(kColumns * kRows));
     EXPECT_LE(farDrawables, 4u);
+}
+
+}  // namespace cadlod::test
+
+namespace cadlod::test {
+
+// A file that shares nothing but holds many parts gets the same hierarchy: each part placed
+// once, in clusters with proxies, the bound held from inside; --hlod off keeps one LOD node.
+TEST(CliHierarchicalLod, AFileThatSharesNothingIsClusteredByItsParts)
+{
+    const std::string dir = freshDirectory("hlod_unshared");
+    const std::string input = writeUnsharedGrid(dir);
+    const CliRun run = runCadlod({"convert", input, "-o", dir + "/parts.flt", "--cluster-parts", "4", "--report",
+                                  dir + "/parts.json"});
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/parts.json"));
+    EXPECT_EQ(report.at("output").at("placements"), 32);
+    EXPECT_EQ(report.at("parts").size(), 32u);
+    EXPECT_EQ(report.at("output").at("instanceDefinitions"), 0);  // each part placed once
+    EXPECT_GE(report.at("hlod").at("clusters").get<int>(), 8);
+    EXPECT_GE(report.at("hlod").at("withProxies").get<int>(), 1);
+
+    const OsgViewProbe osg(dir + "/parts.flt", "parts");
+    ASSERT_TRUE(osg.loaded());
+    std::size_t farDrawables = 0;
+    const std::vector<Point3> eyes = eyePoints(osg.bounds());
+    for (const Point3& eye : eyes) {
+        const OsgView view = osg.drawFrom(eye);
+        EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9));
+        EXPECT_EQ(view.drawnPlacements.size(), 32u);
+        farDrawables = view.drawables;
+    }
+    EXPECT_LE(farDrawables, 2u);  // one proxy, its colours in one Mesh
+
+    const CliRun off = runCadlod({"convert", input, "-o", dir + "/one.flt", "--hlod", "off", "--report",
+                                  dir + "/one.json"});
+    ASSERT_EQ(off.exitCode, 0) << off.stderrText;
+    const nlohmann::json one = nlohmann::json::parse(readFile(dir + "/one.json"));
+    EXPECT_FALSE(one.contains("parts"));
+    EXPECT_EQ(one.at("output").at("lodNodes"), one.at("levels").size());  // one chain: a record per level
 }
 
 }  // namespace cadlod::test

@@ -145,6 +145,37 @@ TEST(VrmlAssembly, AFileThatSharesNothingIsReadAsExpanding)
     EXPECT_EQ(kept.diagnostics.total(), expanded.diagnostics.total());
 }
 
+// A file that shares nothing, as its parts placed once: each DEF'd part (its colours
+// together) a geometry of its own, a name given twice two parts, the shapes no DEF names
+// in the root; every triangle where expanding puts it.
+TEST(VrmlAssembly, AFileThatSharesNothingBecomesItsNamedPartsPlacedOnce)
+{
+    const std::string text =
+        "#VRML V2.0 utf8\n"
+        "DEF A Transform { translation 1 0 0 children [ Shape { geometry Box {} }\n"
+        "  Shape { appearance Appearance { material Material { diffuseColor 1 0 0 } } geometry Sphere {} } ] }\n"
+        "DEF B Transform { translation 0 4 0 children Shape { geometry Cone {} } }\n"
+        "DEF A Transform { translation 0 0 9 children Shape { geometry Box {} } }\n"
+        "Transform { translation 5 5 5 children Shape { geometry Box { size 1 2 3 } } }\n";
+    Scene scene = load(text);
+    EXPECT_EQ(namedParts(scene.parts), 3u);
+    const auto expanded = expandedCorners(scene);
+    scene.assembly = partsPlacedOnce(std::move(scene.parts));
+    ASSERT_EQ(scene.assembly.geometries.size(), 4u);
+    EXPECT_EQ(scene.assembly.geometries[0].parts.size(), 1u);  // the unnamed box
+    EXPECT_EQ(scene.assembly.geometries[1].parts.size(), 2u);  // A's two colours
+    const std::vector<Placement> placements = flattenPlacements(scene.assembly, "test.wrl");
+    std::set<std::string> paths;
+    for (const Placement& p : placements) paths.insert(p.path);
+    EXPECT_EQ(paths, (std::set<std::string>{"test.wrl", "A", "A[2]", "B"}));
+    EXPECT_FALSE(scene.assembly.sharesGeometry());
+    EXPECT_EQ(placedCorners(scene), expanded);
+
+    EXPECT_EQ(namedParts(load("#VRML V2.0 utf8\nShape { geometry Box {} }\nTransform { children Shape { "
+                              "geometry Sphere {} } }\n").parts),
+              0u);
+}
+
 TEST(VrmlAssembly, InlineFilesAreOneGeometryEachAndVrml1SeparatorsToo)
 {
     const fs::path dir = fs::temp_directory_path() / ("cadlod_assembly_" + std::to_string(::getpid()));
