@@ -61,6 +61,11 @@ ViewParams viewOf(const ConvertArgs& a)
     return v;
 }
 
+// The shares of the one progress bar: reading is quick beside the LOD chain, writing quicker.
+constexpr int kReadingEnd = 10, kWritingStart = 95;
+// An assembly's parts fill this much of the LOD chain's share when proxies follow them.
+constexpr int kPartsShareBeforeProxies = 70;
+
 // The fewest Hausdorff samples per side a cluster proxy is measured with.
 constexpr std::size_t kProxySamples = 20000;
 
@@ -277,17 +282,24 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
                                    "--instances expand for Face records");
     const double importSeconds = secondsSince(t0);
     const auto t1 = Clock::now();
+    progress::phase(kReadingEnd, kWritingStart, "LOD chain");
+    const int partsShare = hierarchical(a) && loaded.placements > 1 ? kPartsShareBeforeProxies : 100;
+    progress::beginSpan(0, partsShare, "");
     AssemblyConversion c = convertAssembly(scene, baseName(a.output), importing,
                                            [&](CoreMesh& original, LevelStore& store) {
                                                return buildLevels(a, original, store);
                                            },
                                            hierarchical(a));
+    progress::endSpan();
+    progress::beginSpan(partsShare, 100, "");
     const HierarchyStats hierarchy = clusterPlacements(a, c, importing);
+    progress::endSpan();
     c.model.units = saving.units;
     const double lodSeconds = secondsSince(t1);
     const auto t2 = Clock::now();
+    progress::phase(kWritingStart, 100, "writing");
     flt::WriteOptions writeOptions = saving.flt;
-    writeOptions.progress = [](int p) { progress::report(p, "Writing OpenFlight"); };
+    writeOptions.progress = [](int p) { progress::report(p, ""); };
     flt::InstancedWriteStats written;
     std::vector<std::uint8_t> bytes;
     std::string error;
@@ -295,7 +307,7 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
         throw InputError(a.output + ": " + error);
     outputs.write(a.output, [&](const std::string& temporary) { return writeBytesTo(temporary, bytes); });
     const double writeSeconds = secondsSince(t2);
-    progress::finish();
+    progress::done();
     if (!a.report.empty())
         outputs.write(a.report, [&](const std::string& temporary) {
             nlohmann::json report = assemblyReportJson(a, c, written, loaded, importSeconds, lodSeconds,
@@ -327,6 +339,7 @@ void runConvert(const ConvertArgs& a)
     limitThreads(a.common.threads);
 
     const auto t0 = Clock::now();
+    progress::phase(0, kReadingEnd, "reading");
     CoreMesh original;
     vrml::Scene assembly;
     const LoadedMesh loaded = loadMesh(a.input, original, importing, &assembly);
@@ -337,6 +350,7 @@ void runConvert(const ConvertArgs& a)
     const double importSeconds = secondsSince(t0);
 
     const auto t1 = Clock::now();
+    progress::phase(kReadingEnd, kWritingStart, "LOD chain");
     LevelStore store;
     const LodSetResult result = buildLevels(a, original, store);
     if (!result.ok())
@@ -344,6 +358,7 @@ void runConvert(const ConvertArgs& a)
     const double lodSeconds = secondsSince(t1);
 
     const auto t2 = Clock::now();
+    progress::phase(kWritingStart, 100, "writing");
     std::vector<CoreMesh*> meshes{&original};
     for (auto& m : store.meshes)
         meshes.push_back(m.get());
@@ -351,11 +366,11 @@ void runConvert(const ConvertArgs& a)
     flt::LodModel model = lodMeshesToModel(meshes, result.levels.front().setId, baseName(a.output), skipped);
     model.units = saving.units;
     flt::WriteOptions writeOptions = saving.flt;
-    writeOptions.progress = [](int p) { progress::report(p, "Writing OpenFlight"); };
+    writeOptions.progress = [](int p) { progress::report(p, ""); };
     flt::WriteStats written;
     writeFlt(outputs, a.output, model, writeOptions, written);
     const double writeSeconds = secondsSince(t2);
-    progress::finish();
+    progress::done();
     if (!a.report.empty()) {
         const nlohmann::json timings{{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds},
                                      {"lodMeasureSeconds", result.measureSeconds}, {"writeSeconds", writeSeconds},

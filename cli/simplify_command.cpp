@@ -47,23 +47,27 @@ void runSimplify(const SimplifyArgs& a)
     progress::enable(!a.common.quiet);
     limitThreads(a.common.threads);
     CoreMesh m;
+    progress::phase(0, 10, "reading");
     const LoadedMesh loaded = loadMesh(a.input, m, importing);
     // 0 % asks to remove nothing: the mesh is written as loaded (a conversion), unless a
     // maximum error is what bounds the run.
     if (a.reductionGiven && a.reduction == 0 && a.maxError == 0) {
+        progress::phase(10, 100, "writing");
         saveMesh(a.output, m, saving);
-        progress::finish();
+        progress::done();
         if (!a.common.quiet)
             std::fprintf(stderr, "cadlod: %s: %d faces, written unsimplified (--reduction 0)\n", a.output.c_str(), m.fn);
         if (!a.common.quiet)
             printFindingsSummary(loaded);
         return;
     }
+    progress::phase(10, 95, "simplifying");
     const SimplifyStats stats = bestOfTrials(m, paramsOf(a), progress::callback, runOnWorkers);
     if (!stats.ok)
         throw InputError(a.input + ": " + stats.message);
+    progress::phase(95, 100, "writing");
     saveMesh(a.output, m, saving);
-    progress::finish();
+    progress::done();
     if (!a.common.quiet && stats.stoppedBy.empty())  // nothing to do: the message says why
         std::fprintf(stderr, "cadlod: %s: %d faces, written unsimplified: %s\n", a.output.c_str(), stats.facesAfter,
                      stats.message.c_str());
