@@ -8,6 +8,7 @@
 #include "hierarchical_lod.h"
 #include "lod_output.h"
 #include "mesh_files.h"
+#include "note_lines.h"
 #include "output_file.h"
 #include "progress_bar.h"
 #include "report_json.h"
@@ -172,8 +173,7 @@ void printSummary(const LodSetResult& r, const flt::WriteStats& written, const s
         std::fprintf(stderr, "%5d  %9d  %-16s  %8.4f%%  %s .. %s\n", l.level, l.faces, lengthText(l.hausdorffMax).c_str(),
                      r.modelSize > 0 ? 100.0 * l.hausdorffMax / r.modelSize : 0.0, lengthText(l.switchOut).c_str(),
                      l.switchIn >= kNeverCulled ? "never" : lengthText(l.switchIn).c_str());
-    for (const std::string& w : r.warnings)
-        std::fprintf(stderr, "cadlod: note: %s\n", w.c_str());
+    printFolded("note", r.warnings);
     if (loaded.format == InputFormat::Vrml)
         std::fprintf(stderr, "cadlod: input unit %s%s\n", loaded.unit.describe().c_str(),
                      loaded.kicadHeader && !loaded.kicadUnitApplied ? "; KiCad StepUp header found, its 0.1 inch not applied" : "");
@@ -191,6 +191,11 @@ void printAssemblySummary(const AssemblyConversion& c, const flt::InstancedWrite
     for (const PartChain& p : c.parts)
         std::fprintf(stderr, "%-32.32s  %10zu  %9d  %6zu\n", p.name.c_str(), p.placements, p.triangles,
                      p.result.levels.size());
+    std::vector<std::string> notes;
+    for (const PartChain& p : c.parts)
+        for (const std::string& w : p.result.warnings)
+            notes.push_back(p.name + ": " + w);
+    printFolded("note", notes);
 }
 
 nlohmann::json partsJson(const AssemblyConversion& c, const ViewParams& view)

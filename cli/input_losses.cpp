@@ -29,6 +29,14 @@ std::string countsText(const vrml::Diagnostics& findings, bool losses)
 
 std::string findingLine(const vrml::Diagnostic& d) { return d.where + ": " + d.kind + ": " + d.message; }
 
+std::vector<std::string> findingLines(const vrml::Diagnostics& findings)
+{
+    std::vector<std::string> lines;
+    for (const vrml::Diagnostic& d : findings.kept())
+        lines.push_back(findingLine(d));
+    return lines;
+}
+
 std::vector<std::string> geometryLosses(const vrml::Diagnostics& findings)
 {
     std::vector<std::string> lines;
@@ -51,9 +59,7 @@ void refuseLosses(const vrml::Diagnostics& findings, bool allowPartial)
 
 std::vector<std::string> warningLines(const LoadedMesh& loaded)
 {
-    std::vector<std::string> lines;
-    for (const vrml::Diagnostic& d : loaded.findings.kept())
-        lines.push_back(findingLine(d));
+    std::vector<std::string> lines = findingLines(loaded.findings);
     lines.insert(lines.end(), loaded.notes.begin(), loaded.notes.end());
     return lines;
 }

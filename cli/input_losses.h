@@ -13,6 +13,9 @@ namespace cadlod::cli {
 // "file:line:col: kind: message".
 std::string findingLine(const vrml::Diagnostic& d);
 
+// The kept findings, as findingLine()s.
+std::vector<std::string> findingLines(const vrml::Diagnostics& findings);
+
 // The kept findings that lost geometry, as findingLine()s.
 std::vector<std::string> geometryLosses(const vrml::Diagnostics& findings);
 

@@ -6,6 +6,7 @@
 #include "convert/mesh_to_lod_model.h"
 #include "input_losses.h"
 #include "measure/hausdorff.h"
+#include "note_lines.h"
 #include "obj_reader.h"
 #include "output_file.h"
 #include "progress_bar.h"
@@ -98,9 +99,7 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
     if (!imported.ok())
         throw InputError(imported.error);
     refuseLosses(imported.scene.diagnostics, settings.allowPartial);
-    const auto& kept = imported.scene.diagnostics.kept();
-    for (std::size_t i = 0; i < kept.size() && i < 12; ++i)
-        std::fprintf(stderr, "cadlod: warning: %s\n", findingLine(kept[i]).c_str());
+    printFolded("warning", findingLines(imported.scene.diagnostics), 12);
     LoadedMesh info;
     info.format = InputFormat::Vrml;
     info.findings = imported.scene.diagnostics;
@@ -126,7 +125,7 @@ void checkModelSize(CoreMesh& m, LoadedMesh& info)
     const std::string warning = implausibleSizeWarning(liveDiagonal(m), info.unit);
     if (warning.empty())
         return;
-    std::fprintf(stderr, "cadlod: warning: %s\n", warning.c_str());
+    printFolded("warning", {warning});
     info.notes.push_back(warning);
 }
 

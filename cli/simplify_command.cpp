@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "mesh_files.h"
 #include "output_file.h"
+#include "note_lines.h"
 #include "progress_bar.h"
 
 #include "simplify/best_of_trials.h"
@@ -82,8 +83,7 @@ void runSimplify(const SimplifyArgs& a)
     if (!a.common.quiet && !stats.weightTrials.empty())
         std::fprintf(stderr, "cadlod: %s\n", stats.weightTrials.c_str());
     if (!a.common.quiet)
-        for (const std::string& line : stats.relaxed)  // what gave way to reach the target
-            std::fprintf(stderr, "cadlod: %s\n", line.c_str());
+        printFolded("", stats.relaxed);  // what gave way to reach the target
     if (!a.common.quiet)
         printFindingsSummary(loaded);
 }
