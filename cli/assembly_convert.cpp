@@ -118,6 +118,8 @@ PartChain convertPart(vrml::Geometry& geometry, const ImportSettings& settings, 
         partToMesh(std::move(geometry.parts), geometry.name, original, settings, info);
     }
     chain.triangles = original.fn;
+    chain.weldedVertices = info.mergedVertices;
+    chain.degenerateFaces = info.degenerateFaces;
     LevelStore store;
     {
         progress::Span levels(progress::kWeldingShare, 100);

@@ -153,30 +153,20 @@ void writeFlt(OutputSet& outputs, const std::string& path, const flt::LodModel& 
 
 // One format for every length of the summary: four significant digits, never an exponent
 // beside a fixed-point number.
-std::string lengthText(double metres)
-{
-    char text[32];
-    if (metres != 0 && std::fabs(metres) < 1)
-        std::snprintf(text, sizeof text, "%.4g mm", metres * 1000);
-    else
-        std::snprintf(text, sizeof text, "%.4g m", metres);
-    return text;
-}
+std::string lengthText(double metres) { return metresText(metres, 4); }
 
 void printSummary(const LodSetResult& r, const flt::WriteStats& written, const std::string& output,
                   const LoadedMesh& loaded)
 {
-    std::fprintf(stderr, "cadlod: %s: %zu levels, %zu triangles, %zu bytes (model size %.6g)\n", output.c_str(),
-                 r.levels.size(), written.triangles, written.bytes, r.modelSize);
+    std::fprintf(stderr, "cadlod: %s: %zu levels, %zu triangles, %zu bytes (model size %s)\n", output.c_str(),
+                 r.levels.size(), written.triangles, written.bytes, lengthText(r.modelSize).c_str());
     std::fprintf(stderr, "level  triangles  hausdorff max     (%% diag)  switch out .. in\n");
     for (const LodLevel& l : r.levels)
         std::fprintf(stderr, "%5d  %9d  %-16s  %8.4f%%  %s .. %s\n", l.level, l.faces, lengthText(l.hausdorffMax).c_str(),
                      r.modelSize > 0 ? 100.0 * l.hausdorffMax / r.modelSize : 0.0, lengthText(l.switchOut).c_str(),
                      l.switchIn >= kNeverCulled ? "never" : lengthText(l.switchIn).c_str());
     printFolded("note", r.warnings);
-    if (loaded.format == InputFormat::Vrml)
-        std::fprintf(stderr, "cadlod: input unit %s%s\n", loaded.unit.describe().c_str(),
-                     loaded.kicadHeader && !loaded.kicadUnitApplied ? "; KiCad StepUp header found, its 0.1 inch not applied" : "");
+    printImportSummary(loaded);
     printFindingsSummary(loaded);
 }
 
@@ -198,6 +188,20 @@ void printAssemblySummary(const AssemblyConversion& c, const flt::InstancedWrite
     printFolded("note", notes);
 }
 
+// What the importer did to an assembly: the file's findings, and each distinct part welded
+// as a whole model is.
+LoadedMesh assemblyImport(const LoadedMesh& loaded, const AssemblyConversion& c)
+{
+    LoadedMesh whole = loaded;
+    whole.parts = c.parts.size();
+    whole.placements = c.model.placements.size();
+    for (const PartChain& p : c.parts) {
+        whole.mergedVertices += p.weldedVertices;
+        whole.degenerateFaces += p.degenerateFaces;
+    }
+    return whole;
+}
+
 nlohmann::json partsJson(const AssemblyConversion& c, const ViewParams& view)
 {
     nlohmann::json parts = nlohmann::json::array();
@@ -213,7 +217,8 @@ nlohmann::json assemblyReportJson(const ConvertArgs& a, const AssemblyConversion
                                   double importSeconds, double lodSeconds, double writeSeconds, double totalSeconds)
 {
     nlohmann::json input{{"path", a.input}, {"format", "VRML"}, {"parts", c.parts.size()},
-                         {"placements", written.placements}, {"faces", c.model.placedTriangles()}};
+                         {"placements", written.placements}, {"faces", c.model.placedTriangles()},
+                         {"mergedVertices", loaded.mergedVertices}};
     input.update(findingsJson(loaded));
     return {
         {"command", "convert"},
@@ -313,9 +318,10 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     outputs.write(a.output, [&](const std::string& temporary) { return writeBytesTo(temporary, bytes); });
     const double writeSeconds = secondsSince(t2);
     progress::done();
+    const LoadedMesh imported = assemblyImport(loaded, c);
     if (!a.report.empty())
         outputs.write(a.report, [&](const std::string& temporary) {
-            nlohmann::json report = assemblyReportJson(a, c, written, loaded, importSeconds, lodSeconds,
+            nlohmann::json report = assemblyReportJson(a, c, written, imported, importSeconds, lodSeconds,
                                                        writeSeconds, secondsSince(t0));
             report["hlod"] = hierarchyJson(a, hierarchy);
             return writeJsonTo(temporary, report);
@@ -324,7 +330,8 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     if (!a.common.quiet) {
         printAssemblySummary(c, written, a.output);
         printHierarchySummary(a, hierarchy);
-        printFindingsSummary(loaded);
+        printImportSummary(imported);
+        printFindingsSummary(imported);
     }
 }
 

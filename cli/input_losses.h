@@ -27,8 +27,13 @@ void refuseLosses(const vrml::Diagnostics& findings, bool allowPartial);
 std::vector<std::string> warningLines(const LoadedMesh& loaded);
 std::size_t warningCount(const LoadedMesh& loaded);
 
-// The input's findings for the report: {"complete", "lost": [lines], "findings": {kind: count}}.
+// The input's findings for the report: {"complete", "lost": [lines], "findings": {kind: count},
+// "facesDropped": {"invalid", "degenerateAfterWelding"}}.
 nlohmann::json findingsJson(const LoadedMesh& loaded);
+
+// On stderr, one line of what the importer did: the parts (and `placements` of an
+// assembly), the vertices welded and the faces dropped, the unit and why, KiCad's header.
+void printImportSummary(const LoadedMesh& loaded);
 
 // On stderr: the number of warnings by kind and, for a partial input, what was lost.
 void printFindingsSummary(const LoadedMesh& loaded);

@@ -70,12 +70,15 @@ void prepareForSimplifier(CoreMesh& m)
     vcg::tri::UpdateTopology<CoreMesh>::VertexFace(m);
 }
 
-int sceneToCoreMesh(vrml::Scene& scene, CoreMesh& m, const ImportSettings& settings)
+void sceneToCoreMesh(vrml::Scene& scene, CoreMesh& m, const ImportSettings& settings, LoadedMesh& info)
 {
     mesh_io::SceneToMeshOptions toMesh;
     toMesh.mergeVertices = settings.mergeVertices;
     toMesh.mergeTolerance = settings.mergeTolerance;
-    return mesh_io::sceneToMesh(scene, m, toMesh, progress::callback);
+    mesh_io::SceneToMeshStats stats;
+    mesh_io::sceneToMesh(scene, m, toMesh, progress::callback, &stats);
+    info.mergedVertices = stats.mergedVertices;
+    info.degenerateFaces = stats.facesRepeatingVertex;
 }
 
 vrml::ImportOptions vrmlOptions(const ImportSettings& settings, bool keepInstances)
@@ -106,6 +109,7 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
     info.kicadHeader = imported.assumed.kicadHeader;
     info.kicadUnitApplied = imported.assumed.kicadUnits;
     info.unit = chooseUnit(settings.unit, info.kicadUnitApplied, settings.defaultUnit, settings.defaultUnitGiven);
+    info.invalidFaces = imported.scene.stats.skippedFaces;
     if (!imported.scene.assembly.empty()) {
         info.parts = imported.scene.assembly.geometries.size();
         info.placements = imported.scene.assembly.placementCount();
@@ -113,7 +117,7 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
         return info;
     }
     info.parts = imported.scene.parts.size();
-    info.mergedVertices = sceneToCoreMesh(imported.scene, m, settings);
+    sceneToCoreMesh(imported.scene, m, settings, info);
     if (m.fn == 0)
         throw InputError(path + ": no triangles in the scene");
     return info;
@@ -261,7 +265,7 @@ void partToMesh(std::vector<vrml::Part>&& parts, const std::string& name, CoreMe
     scene.parts = std::move(parts);
     info.format = InputFormat::Vrml;
     info.parts = scene.parts.size();
-    info.mergedVertices = sceneToCoreMesh(scene, m, settings);
+    sceneToCoreMesh(scene, m, settings, info);
     if (m.fn == 0)
         throw InputError(name + ": no triangles in the part");
     prepareForSimplifier(m);
