@@ -1,5 +1,6 @@
 #include "mesh_files.h"
 
+#include "assembly_size.h"
 #include "cli_errors.h"
 #include "openflight/flt_reader.h"
 #include "convert/lod_model_to_mesh.h"
@@ -124,9 +125,9 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
 }
 
 // A VRML model whose size is implausible for its unit is reported when loaded.
-void checkModelSize(CoreMesh& m, LoadedMesh& info)
+void checkModelSize(double diagonalMetres, LoadedMesh& info)
 {
-    const std::string warning = implausibleSizeWarning(liveDiagonal(m), info.unit);
+    const std::string warning = implausibleSizeWarning(diagonalMetres, info.unit);
     if (warning.empty())
         return;
     printFolded("warning", {warning});
@@ -238,8 +239,10 @@ LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& 
     switch (formatOf(path)) {
     case InputFormat::Vrml:
         info = loadVrml(path, m, settings, assembly);
-        if (info.placements > 0)
+        if (info.placements > 0) {
+            checkModelSize(placedDiagonal(assembly->assembly), info);
             return info;
+        }
         break;
     case InputFormat::OpenFlight: info = loadFlt(path, m, settings); break;
     case InputFormat::Ply: info = loadWithVcg<vcg::tri::io::ImporterPLY<CoreMesh>>(
@@ -254,7 +257,7 @@ LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& 
         throw InputError(path + ": no triangles");
     prepareForSimplifier(m);
     if (info.format == InputFormat::Vrml)
-        checkModelSize(m, info);
+        checkModelSize(liveDiagonal(m), info);
     return info;
 }
 
