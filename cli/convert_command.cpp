@@ -370,13 +370,13 @@ void runConvert(const ConvertArgs& a)
     const double lodSeconds = secondsSince(t1);
 
     const auto t2 = Clock::now();
-    progress::phase(kWritingStart, 100, "writing");
     std::vector<CoreMesh*> meshes{&original};
     for (auto& m : store.meshes)
         meshes.push_back(m.get());
     std::size_t skipped = 0;
     flt::LodModel model = lodMeshesToModel(meshes, result.levels.front().setId, baseName(a.output), skipped);
     model.units = saving.units;
+    progress::phase(kWritingStart, 100, "writing");
     flt::WriteOptions writeOptions = saving.flt;
     writeOptions.progress = [](int p) { progress::report(p, ""); };
     flt::WriteStats written;
