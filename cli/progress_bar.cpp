@@ -185,7 +185,8 @@ void beginSpan(int from, int to, const std::string& label)
     const Frame& outer = s.frames.back();
     const double share = (outer.to - outer.from) / 100.0;
     const double start = std::clamp(from, 0, 100);
-    s.frames.push_back(Frame{outer.from + share * start, outer.from + share * std::clamp<double>(to, start, 100), label});
+    const double end = std::clamp<double>(to, start, 100);
+    s.frames.push_back(Frame{outer.from + share * start, outer.from + share * end, label});
     report(0, "");
 }
 

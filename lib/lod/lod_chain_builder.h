@@ -241,7 +241,8 @@ private:
             // Named by its distance alone (never with an exponent): the chain also keeps levels
             // halfway between the planned ones and past the box proxy, which a planned count
             // would leave out.
-            std::snprintf(text, sizeof text, d >= 1000 ? "Simplifying for %.0f %s and beyond" : "Simplifying for %.3g %s and beyond", d,
+            std::snprintf(text, sizeof text,
+                          d >= 1000 ? "Simplifying for %.0f %s and beyond" : "Simplifying for %.3g %s and beyond", d,
                           options_.distanceUnit.c_str());
             progress_(100 * std::min(k, plannedLevels_) / (plannedLevels_ + 1), text);
         }

@@ -73,7 +73,8 @@ std::string writeInstancedAssembly(const std::string& dir)
                             "  Shape { geometry Box { size 30 20 1 } }\n"
                             "  DEF K1 Transform { translation -8 0 1 children Inline { url \"knob.wrl\" } }\n"
                             "  DEF K2 Transform { translation 8 0 1 children Inline { url \"knob.wrl\" } }\n"
-                            "  DEF C1 Transform { translation 0 5 1 children DEF CYL Shape { geometry Cylinder { radius 1 height 4 } } }\n"
+                            "  DEF C1 Transform { translation 0 5 1 children\n"
+                            "    DEF CYL Shape { geometry Cylinder { radius 1 height 4 } } }\n"
                             "  DEF C2 Transform { translation 0 -5 1 children USE CYL }\n"
                             "] }\n"
                             "DEF Board_2 Transform { translation 0 0 40 children USE BOARD }\n");
