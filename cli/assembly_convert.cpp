@@ -113,10 +113,18 @@ PartChain convertPart(vrml::Geometry& geometry, const ImportSettings& settings, 
     chain.name = geometry.name;
     CoreMesh original;
     LoadedMesh info;
-    partToMesh(std::move(geometry.parts), geometry.name, original, settings, info);
+    {
+        progress::Span welding(0, progress::kWeldingShare);
+        partToMesh(std::move(geometry.parts), geometry.name, original, settings, info);
+    }
     chain.triangles = original.fn;
+    chain.weldedVertices = info.mergedVertices;
+    chain.degenerateFaces = info.degenerateFaces;
     LevelStore store;
-    chain.result = buildChain(original, store);
+    {
+        progress::Span levels(progress::kWeldingShare, 100);
+        chain.result = buildChain(original, store);
+    }
     if (!chain.result.ok())
         throw InputError("part " + geometry.name + ": " + chain.result.error);
     std::vector<CoreMesh*> meshes{&original};

@@ -24,6 +24,8 @@ struct PartChain {
     std::string name;
     std::size_t placements = 0;
     int triangles = 0;           // level 0
+    int weldedVertices = 0;      // as the importer welds a whole model
+    int degenerateFaces = 0;     // ... and removes the faces welding left with a vertex twice
     LodSetResult result;         // levels and what the chain said
 };
 

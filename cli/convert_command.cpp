@@ -8,6 +8,7 @@
 #include "hierarchical_lod.h"
 #include "lod_output.h"
 #include "mesh_files.h"
+#include "note_lines.h"
 #include "output_file.h"
 #include "progress_bar.h"
 #include "report_json.h"
@@ -62,6 +63,11 @@ ViewParams viewOf(const ConvertArgs& a)
     v.pixelThreshold = a.pixelError;
     return v;
 }
+
+// The shares of the one progress bar: reading is quick beside the LOD chain, writing quicker.
+constexpr int kReadingEnd = 10, kWritingStart = 95;
+// An assembly's parts fill this much of the LOD chain's share when proxies follow them.
+constexpr int kPartsShareBeforeProxies = 70;
 
 // The fewest Hausdorff samples per side a cluster proxy is measured with.
 constexpr std::size_t kProxySamples = 20000;
@@ -152,31 +158,20 @@ void writeFlt(OutputSet& outputs, const std::string& path, const flt::LodModel& 
 
 // One format for every length of the summary: four significant digits, never an exponent
 // beside a fixed-point number.
-std::string lengthText(double metres)
-{
-    char text[32];
-    if (metres != 0 && std::fabs(metres) < 1)
-        std::snprintf(text, sizeof text, "%.4g mm", metres * 1000);
-    else
-        std::snprintf(text, sizeof text, "%.4g m", metres);
-    return text;
-}
+std::string lengthText(double metres) { return metresText(metres, 4); }
 
 void printSummary(const LodSetResult& r, const flt::WriteStats& written, const std::string& output,
                   const LoadedMesh& loaded)
 {
-    std::fprintf(stderr, "cadlod: %s: %zu levels, %zu triangles, %zu bytes (model size %.6g)\n", output.c_str(),
-                 r.levels.size(), written.triangles, written.bytes, r.modelSize);
+    std::fprintf(stderr, "cadlod: %s: %zu levels, %zu triangles, %zu bytes (model size %s)\n", output.c_str(),
+                 r.levels.size(), written.triangles, written.bytes, lengthText(r.modelSize).c_str());
     std::fprintf(stderr, "level  triangles  hausdorff max     (%% diag)  switch out .. in\n");
     for (const LodLevel& l : r.levels)
         std::fprintf(stderr, "%5d  %9d  %-16s  %8.4f%%  %s .. %s\n", l.level, l.faces, lengthText(l.hausdorffMax).c_str(),
                      r.modelSize > 0 ? 100.0 * l.hausdorffMax / r.modelSize : 0.0, lengthText(l.switchOut).c_str(),
                      l.switchIn >= kNeverCulled ? "never" : lengthText(l.switchIn).c_str());
-    for (const std::string& w : r.warnings)
-        std::fprintf(stderr, "cadlod: note: %s\n", w.c_str());
-    if (loaded.format == InputFormat::Vrml)
-        std::fprintf(stderr, "cadlod: input unit %s%s\n", loaded.unit.describe().c_str(),
-                     loaded.kicadHeader && !loaded.kicadUnitApplied ? "; KiCad StepUp header found, its 0.1 inch not applied" : "");
+    printFolded("note", r.warnings);
+    printImportSummary(loaded);
     printFindingsSummary(loaded);
 }
 
@@ -191,6 +186,25 @@ void printAssemblySummary(const AssemblyConversion& c, const flt::InstancedWrite
     for (const PartChain& p : c.parts)
         std::fprintf(stderr, "%-32.32s  %10zu  %9d  %6zu\n", p.name.c_str(), p.placements, p.triangles,
                      p.result.levels.size());
+    std::vector<std::string> notes;
+    for (const PartChain& p : c.parts)
+        for (const std::string& w : p.result.warnings)
+            notes.push_back(p.name + ": " + w);
+    printFolded("note", notes);
+}
+
+// What the importer did to an assembly: the file's findings, and each distinct part welded
+// as a whole model is.
+LoadedMesh assemblyImport(const LoadedMesh& loaded, const AssemblyConversion& c)
+{
+    LoadedMesh whole = loaded;
+    whole.parts = c.parts.size();
+    whole.placements = c.model.placements.size();
+    for (const PartChain& p : c.parts) {
+        whole.mergedVertices += p.weldedVertices;
+        whole.degenerateFaces += p.degenerateFaces;
+    }
+    return whole;
 }
 
 nlohmann::json partsJson(const AssemblyConversion& c, const ViewParams& view)
@@ -208,7 +222,8 @@ nlohmann::json assemblyReportJson(const ConvertArgs& a, const AssemblyConversion
                                   double importSeconds, double lodSeconds, double writeSeconds, double totalSeconds)
 {
     nlohmann::json input{{"path", a.input}, {"format", "VRML"}, {"parts", c.parts.size()},
-                         {"placements", written.placements}, {"faces", c.model.placedTriangles()}};
+                         {"placements", written.placements}, {"faces", c.model.placedTriangles()},
+                         {"mergedVertices", loaded.mergedVertices}};
     input.update(findingsJson(loaded));
     return {
         {"command", "convert"},
@@ -294,18 +309,25 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     const auto t1 = Clock::now();
     const double lengthScale = loaded.lengthScale;
     const ImportSettings inParts = inMeshUnits(importing, loaded);
+    progress::phase(kReadingEnd, kWritingStart, "LOD chain");
+    const int partsShare = hierarchical(a) && loaded.placements > 1 ? kPartsShareBeforeProxies : 100;
+    progress::beginSpan(0, partsShare, "");
     AssemblyConversion c = convertAssembly(scene, baseName(a.output), inParts,
                                            [&](CoreMesh& original, LevelStore& store) {
                                                return buildLevels(a, lengthScale, original, store);
                                            },
                                            hierarchical(a));
+    progress::endSpan();
+    progress::beginSpan(partsShare, 100, "");
     const HierarchyStats hierarchy = clusterPlacements(a, c, inParts, lengthScale);
+    progress::endSpan();
     toUnitChosen(c, lengthScale);
     c.model.units = saving.units;
     const double lodSeconds = secondsSince(t1);
     const auto t2 = Clock::now();
+    progress::phase(kWritingStart, 100, "writing");
     flt::WriteOptions writeOptions = saving.flt;
-    writeOptions.progress = [](int p) { progress::report(p, "Writing OpenFlight"); };
+    writeOptions.progress = [](int p) { progress::report(p, ""); };
     flt::InstancedWriteStats written;
     std::vector<std::uint8_t> bytes;
     std::string error;
@@ -313,10 +335,11 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
         throw InputError(a.output + ": " + error);
     outputs.write(a.output, [&](const std::string& temporary) { return writeBytesTo(temporary, bytes); });
     const double writeSeconds = secondsSince(t2);
-    progress::finish();
+    progress::done();
+    const LoadedMesh imported = assemblyImport(loaded, c);
     if (!a.report.empty())
         outputs.write(a.report, [&](const std::string& temporary) {
-            nlohmann::json report = assemblyReportJson(a, c, written, loaded, importSeconds, lodSeconds,
+            nlohmann::json report = assemblyReportJson(a, c, written, imported, importSeconds, lodSeconds,
                                                        writeSeconds, secondsSince(t0));
             report["hlod"] = hierarchyJson(a, hierarchy);
             return writeJsonTo(temporary, report);
@@ -325,7 +348,8 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     if (!a.common.quiet) {
         printAssemblySummary(c, written, a.output);
         printHierarchySummary(a, hierarchy);
-        printFindingsSummary(loaded);
+        printImportSummary(imported);
+        printFindingsSummary(imported);
     }
 }
 
@@ -347,6 +371,7 @@ void runConvert(const ConvertArgs& a)
     limitThreads(a.common.threads);
 
     const auto t0 = Clock::now();
+    progress::phase(0, kReadingEnd, "reading");
     CoreMesh original;
     vrml::Scene assembly;
     const LoadedMesh loaded = loadMesh(a.input, original, importing, &assembly);
@@ -357,6 +382,7 @@ void runConvert(const ConvertArgs& a)
     const double importSeconds = secondsSince(t0);
 
     const auto t1 = Clock::now();
+    progress::phase(kReadingEnd, kWritingStart, "LOD chain");
     LevelStore store;
     LodSetResult result = buildLevels(a, loaded.lengthScale, original, store);
     if (!result.ok())
@@ -372,12 +398,13 @@ void runConvert(const ConvertArgs& a)
     flt::scaleLengths(model, loaded.lengthScale);
     scaleLengths(result, loaded.lengthScale);
     model.units = saving.units;
+    progress::phase(kWritingStart, 100, "writing");
     flt::WriteOptions writeOptions = saving.flt;
-    writeOptions.progress = [](int p) { progress::report(p, "Writing OpenFlight"); };
+    writeOptions.progress = [](int p) { progress::report(p, ""); };
     flt::WriteStats written;
     writeFlt(outputs, a.output, model, writeOptions, written);
     const double writeSeconds = secondsSince(t2);
-    progress::finish();
+    progress::done();
     if (!a.report.empty()) {
         const nlohmann::json timings{{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds},
                                      {"lodMeasureSeconds", result.measureSeconds}, {"writeSeconds", writeSeconds},

@@ -332,9 +332,16 @@ private:
             return;
         CoreMesh mesh;
         LoadedMesh info;
-        partToMesh(merged.take(), "cluster", mesh, settings_, info);
+        {
+            progress::Span welding(0, progress::kWeldingShare);
+            partToMesh(merged.take(), "cluster", mesh, settings_, info);
+        }
         LevelStore store;
-        const LodSetResult result = buildProxyChain_(mesh, store, firstDistance);
+        LodSetResult result;
+        {
+            progress::Span chain(progress::kWeldingShare, 100);
+            result = buildProxyChain_(mesh, store, firstDistance);
+        }
         if (!result.ok())
             throw InputError("a cluster proxy: " + result.error);
         std::vector<CoreMesh*> meshes{&mesh};

@@ -25,9 +25,46 @@ std::string countsText(const vrml::Diagnostics& findings, bool losses)
     return text;
 }
 
+std::string counted(std::size_t n, const char* one, const char* many)
+{
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+std::string partsText(const LoadedMesh& loaded)
+{
+    if (loaded.placements > 0)
+        return counted(loaded.parts, "distinct part", "distinct parts") + " in " +
+               counted(loaded.placements, "placement", "placements");
+    return counted(loaded.parts, "part", "parts");
+}
+
+std::string droppedFacesText(const LoadedMesh& loaded)
+{
+    const std::size_t degenerate = std::size_t(loaded.degenerateFaces);
+    if (loaded.invalidFaces + degenerate == 0)
+        return "no faces dropped";
+    std::string why;
+    if (loaded.invalidFaces > 0)
+        why = std::to_string(loaded.invalidFaces) + " invalid";
+    if (degenerate > 0)
+        why += (why.empty() ? "" : ", ") + std::to_string(degenerate) + " degenerate after welding";
+    return counted(loaded.invalidFaces + degenerate, "face", "faces") + " dropped (" + why + ")";
+}
+
+// Readers that weld coincident vertices (the simplifier needs the surface connected).
+bool welds(InputFormat format) { return format == InputFormat::Vrml || format == InputFormat::OpenFlight; }
+
 }  // namespace
 
 std::string findingLine(const vrml::Diagnostic& d) { return d.where + ": " + d.kind + ": " + d.message; }
+
+std::vector<std::string> findingLines(const vrml::Diagnostics& findings)
+{
+    std::vector<std::string> lines;
+    for (const vrml::Diagnostic& d : findings.kept())
+        lines.push_back(findingLine(d));
+    return lines;
+}
 
 std::vector<std::string> geometryLosses(const vrml::Diagnostics& findings)
 {
@@ -51,9 +88,7 @@ void refuseLosses(const vrml::Diagnostics& findings, bool allowPartial)
 
 std::vector<std::string> warningLines(const LoadedMesh& loaded)
 {
-    std::vector<std::string> lines;
-    for (const vrml::Diagnostic& d : loaded.findings.kept())
-        lines.push_back(findingLine(d));
+    std::vector<std::string> lines = findingLines(loaded.findings);
     lines.insert(lines.end(), loaded.notes.begin(), loaded.notes.end());
     return lines;
 }
@@ -70,7 +105,21 @@ nlohmann::json findingsJson(const LoadedMesh& loaded)
         counts[kind] = count;
     return {{"complete", lossCount(loaded.findings) == 0},
             {"lost", geometryLosses(loaded.findings)},
-            {"findings", counts}};
+            {"findings", counts},
+            {"facesDropped", {{"invalid", loaded.invalidFaces}, {"degenerateAfterWelding", loaded.degenerateFaces}}}};
+}
+
+void printImportSummary(const LoadedMesh& loaded)
+{
+    std::string line = partsText(loaded);
+    if (welds(loaded.format))
+        line += ", " + counted(std::size_t(loaded.mergedVertices), "vertex welded", "vertices welded");
+    if (loaded.format == InputFormat::Vrml) {
+        line += ", " + droppedFacesText(loaded) + "; input unit " + loaded.unit.describe();
+        if (loaded.kicadHeader && !loaded.kicadUnitApplied)
+            line += "; KiCad StepUp header found, its 0.1 inch not applied";
+    }
+    std::fprintf(stderr, "cadlod: import: %s\n", line.c_str());
 }
 
 void printFindingsSummary(const LoadedMesh& loaded)

@@ -1,11 +1,13 @@
 #include "mesh_files.h"
 
+#include "assembly_size.h"
 #include "cli_errors.h"
 #include "openflight/flt_reader.h"
 #include "convert/lod_model_to_mesh.h"
 #include "convert/mesh_to_lod_model.h"
 #include "input_losses.h"
 #include "measure/hausdorff.h"
+#include "note_lines.h"
 #include "obj_reader.h"
 #include "output_file.h"
 #include "progress_bar.h"
@@ -70,12 +72,15 @@ void prepareForSimplifier(CoreMesh& m)
     vcg::tri::UpdateTopology<CoreMesh>::VertexFace(m);
 }
 
-int sceneToCoreMesh(vrml::Scene& scene, CoreMesh& m, const ImportSettings& settings)
+void sceneToCoreMesh(vrml::Scene& scene, CoreMesh& m, const ImportSettings& settings, LoadedMesh& info)
 {
     mesh_io::SceneToMeshOptions toMesh;
     toMesh.mergeVertices = settings.mergeVertices;
     toMesh.mergeTolerance = settings.mergeTolerance;
-    return mesh_io::sceneToMesh(scene, m, toMesh, progress::callback);
+    mesh_io::SceneToMeshStats stats;
+    mesh_io::sceneToMesh(scene, m, toMesh, progress::callback, &stats);
+    info.mergedVertices = stats.mergedVertices;
+    info.degenerateFaces = stats.facesRepeatingVertex;
 }
 
 vrml::ImportOptions vrmlOptions(const ImportSettings& settings, bool keepInstances)
@@ -100,9 +105,7 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
     if (!imported.ok())
         throw InputError(imported.error);
     refuseLosses(imported.scene.diagnostics, settings.allowPartial);
-    const auto& kept = imported.scene.diagnostics.kept();
-    for (std::size_t i = 0; i < kept.size() && i < 12; ++i)
-        std::fprintf(stderr, "cadlod: warning: %s\n", findingLine(kept[i]).c_str());
+    printFolded("warning", findingLines(imported.scene.diagnostics), 12);
     LoadedMesh info;
     info.format = InputFormat::Vrml;
     info.findings = imported.scene.diagnostics;
@@ -110,6 +113,7 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
     info.kicadUnitApplied = imported.assumed.kicadUnits;
     info.unit = chooseUnit(settings.unit, info.kicadUnitApplied, settings.defaultUnit, settings.defaultUnitGiven);
     info.lengthScale = imported.assumed.remainingScale;
+    info.invalidFaces = imported.scene.stats.skippedFaces;
     if (settings.placeParts && assembly && imported.scene.assembly.empty() &&
         vrml::namedParts(imported.scene.parts) > 1)
         imported.scene.assembly = vrml::partsPlacedOnce(std::move(imported.scene.parts));
@@ -120,19 +124,19 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
         return info;
     }
     info.parts = imported.scene.parts.size();
-    info.mergedVertices = sceneToCoreMesh(imported.scene, m, inMeshUnits(settings, info));
+    sceneToCoreMesh(imported.scene, m, inMeshUnits(settings, info), info);
     if (m.fn == 0)
         throw InputError(path + ": no triangles in the scene");
     return info;
 }
 
 // A VRML model whose size is implausible for its unit is reported when loaded.
-void checkModelSize(CoreMesh& m, LoadedMesh& info)
+void checkModelSize(double diagonalMetres, LoadedMesh& info)
 {
-    const std::string warning = implausibleSizeWarning(liveDiagonal(m) * info.lengthScale, info.unit);
+    const std::string warning = implausibleSizeWarning(diagonalMetres, info.unit);
     if (warning.empty())
         return;
-    std::fprintf(stderr, "cadlod: warning: %s\n", warning.c_str());
+    printFolded("warning", {warning});
     info.notes.push_back(warning);
 }
 
@@ -247,8 +251,10 @@ LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& 
     switch (formatOf(path)) {
     case InputFormat::Vrml:
         info = loadVrml(path, m, settings, assembly);
-        if (info.placements > 0)
+        if (info.placements > 0) {
+            checkModelSize(placedDiagonal(assembly->assembly) * info.lengthScale, info);
             return info;
+        }
         break;
     case InputFormat::OpenFlight: info = loadFlt(path, m, settings); break;
     case InputFormat::Ply: info = loadWithVcg<vcg::tri::io::ImporterPLY<CoreMesh>>(
@@ -263,7 +269,7 @@ LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& 
         throw InputError(path + ": no triangles");
     prepareForSimplifier(m);
     if (info.format == InputFormat::Vrml)
-        checkModelSize(m, info);
+        checkModelSize(liveDiagonal(m) * info.lengthScale, info);
     return info;
 }
 
@@ -274,7 +280,7 @@ void partToMesh(std::vector<vrml::Part>&& parts, const std::string& name, CoreMe
     scene.parts = std::move(parts);
     info.format = InputFormat::Vrml;
     info.parts = scene.parts.size();
-    info.mergedVertices = sceneToCoreMesh(scene, m, settings);
+    sceneToCoreMesh(scene, m, settings, info);
     if (m.fn == 0)
         throw InputError(name + ": no triangles in the part");
     prepareForSimplifier(m);

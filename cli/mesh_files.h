@@ -43,6 +43,8 @@ struct LoadedMesh {
     InputFormat format = InputFormat::Unknown;
     std::size_t parts = 0;
     int mergedVertices = 0;
+    std::size_t invalidFaces = 0;    // VRML: faces left out for bad indices or fewer than 3
+    int degenerateFaces = 0;         // VRML: faces that welding gave a vertex twice, removed
     std::size_t fltLevels = 0;       // OpenFlight: levels in the file
     flt::Units fltUnits = flt::Units::Meters;
     std::size_t placements = 0;      // kept instances: placements of the distinct parts

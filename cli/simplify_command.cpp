@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "mesh_files.h"
 #include "output_file.h"
+#include "note_lines.h"
 #include "progress_bar.h"
 
 #include "lod/scale_lengths.h"
@@ -59,26 +60,30 @@ void runSimplify(const SimplifyArgs& a)
     progress::enable(!a.common.quiet);
     limitThreads(a.common.threads);
     CoreMesh m;
+    progress::phase(0, 10, "reading");
     const LoadedMesh loaded = loadMesh(a.input, m, importing);
     // 0 % asks to remove nothing: the mesh is written as loaded (a conversion), unless a
     // maximum error is what bounds the run.
     if (a.reductionGiven && a.reduction == 0 && a.maxError == 0) {
         toUnitChosen(m, loaded);
+        progress::phase(10, 100, "writing");
         saveMesh(a.output, m, saving);
-        progress::finish();
+        progress::done();
         if (!a.common.quiet)
             std::fprintf(stderr, "cadlod: %s: %d faces, written unsimplified (--reduction 0)\n", a.output.c_str(), m.fn);
         if (!a.common.quiet)
             printFindingsSummary(loaded);
         return;
     }
+    progress::phase(10, 95, "simplifying");
     SimplifyStats stats = bestOfTrials(m, paramsOf(a), progress::callback, runOnWorkers);
     if (!stats.ok)
         throw InputError(a.input + ": " + stats.message);
     toUnitChosen(m, loaded);
     scaleLengths(stats, loaded.lengthScale);
+    progress::phase(95, 100, "writing");
     saveMesh(a.output, m, saving);
-    progress::finish();
+    progress::done();
     if (!a.common.quiet && stats.stoppedBy.empty())  // nothing to do: the message says why
         std::fprintf(stderr, "cadlod: %s: %d faces, written unsimplified: %s\n", a.output.c_str(), stats.facesAfter,
                      stats.message.c_str());
@@ -93,8 +98,7 @@ void runSimplify(const SimplifyArgs& a)
     if (!a.common.quiet && !stats.weightTrials.empty())
         std::fprintf(stderr, "cadlod: %s\n", stats.weightTrials.c_str());
     if (!a.common.quiet)
-        for (const std::string& line : stats.relaxed)  // what gave way to reach the target
-            std::fprintf(stderr, "cadlod: %s\n", line.c_str());
+        printFolded("", stats.relaxed);  // what gave way to reach the target
     if (!a.common.quiet)
         printFindingsSummary(loaded);
 }

@@ -15,17 +15,26 @@ constexpr double kLargestPlausible = 100.0;
 
 bool plausible(double metres) { return metres >= kSmallestPlausible && metres <= kLargestPlausible; }
 
-std::string lengthText(double metres)
-{
-    char text[64];
-    if (metres >= 1.0 || metres == 0.0)
-        std::snprintf(text, sizeof text, "%.3g m", metres);
-    else
-        std::snprintf(text, sizeof text, "%.3g mm", metres * 1000.0);
-    return text;
-}
+std::string lengthText(double metres) { return metresText(metres, 3); }
 
 }  // namespace
+
+std::string metresText(double metres, int digits)
+{
+    // printf's %g writes an exponent for what rounds to 10^digits or more, and below 1e-4.
+    const double exponentFrom = std::pow(10.0, digits) - 0.5;
+    const double size = std::fabs(metres);
+    char text[64];
+    if (size >= exponentFrom)
+        std::snprintf(text, sizeof text, "%.0f m", metres);
+    else if (size == 0 || size >= 1 || size * 1000 >= exponentFrom)
+        std::snprintf(text, sizeof text, "%.*g m", digits, metres);
+    else if (size >= 1e-7)
+        std::snprintf(text, sizeof text, "%.*g mm", digits, metres * 1000);
+    else
+        std::snprintf(text, sizeof text, "%.10f mm", metres * 1000);
+    return text;
+}
 
 double unitScaleOf(const std::string& unit, const std::string& option)
 {

@@ -24,6 +24,10 @@ double unitScaleOf(const std::string& unit, const std::string& option = "--unit"
 // command line).
 UnitChoice chooseUnit(const std::string& given, bool kicadApplied, const std::string& fallback, bool fallbackGiven);
 
+// A length for people: `digits` significant digits, in mm below a metre, never with an
+// exponent (whole metres from 10^digits m on).
+std::string metresText(double metres, int digits);
+
 // Empty when a model `diagonalMetres` across is a plausible CAD model (1 mm .. 100 m);
 // else a warning that says the size, the unit assumed and why, and the --unit that fixes it.
 std::string implausibleSizeWarning(double diagonalMetres, const UnitChoice& unit);

@@ -238,8 +238,13 @@ private:
             pieces_.startFarField();
         if (progress_ && planned) {  // the step halfway to the next level is part of it
             char text[120];
-            std::snprintf(text, sizeof text, "Simplifying for %.3g %s and beyond (about %d levels)", d * options_.distanceScale,
-                          options_.distanceUnit.c_str(), plannedLevels_);
+            // Named by its distance alone (never with an exponent): the chain also keeps levels
+            // halfway between the planned ones and past the box proxy, which a planned count
+            // would leave out.
+            const double shown = d * options_.distanceScale;
+            std::snprintf(text, sizeof text,
+                          shown >= 1000 ? "Simplifying for %.0f %s and beyond" : "Simplifying for %.3g %s and beyond",
+                          shown, options_.distanceUnit.c_str());
             progress_(100 * std::min(k, plannedLevels_) / (plannedLevels_ + 1), text);
         }
         // Before the far field a collapse is held to the budget both by its quadric error and

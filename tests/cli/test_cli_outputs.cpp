@@ -108,7 +108,7 @@ void killWhileWriting(const std::vector<std::string>& args)
     char line[512];
     bool writing = false;
     while (!writing && std::fgets(line, sizeof line, err))
-        writing = std::string(line).find("Writing OpenFlight") != std::string::npos;
+        writing = std::string(line).find("% writing") != std::string::npos;
     ::kill(pid, SIGKILL);
     std::fclose(err);
     int status = 0;

@@ -110,6 +110,46 @@ TEST(CliUnits, AnImplausibleSizeIsAWarningNamingTheUnitThatFixesIt)
     EXPECT_EQ(fine.run.stderrText.find("across"), std::string::npos) << fine.run.stderrText;
 }
 
+// "the model is ... across" of a run's warning, empty when there is none.
+std::string sizeWarning(const std::string& text)
+{
+    const std::size_t at = text.find("the model is ");
+    return at == std::string::npos ? std::string() : text.substr(at, text.find(" across", at) - at);
+}
+
+TEST(CliUnits, AnInstancedAssemblyOfImplausibleSizeIsAWarningToo)
+{
+    const std::string dir = freshDirectory("units_assembly_size");
+    const std::string input = dir + "/asm.wrl";
+    std::ofstream(input) << "#VRML V2.0 utf8\n"
+                            "DEF BOARD Group { children [\n"
+                            "  Shape { geometry Box { size 30 20 1 } }\n"
+                            "  DEF P1 Transform { translation 8 0 1 children DEF PIN Shape { geometry Box { size 1 1 4 } } }\n"
+                            "  DEF P2 Transform { translation -8 0 1 children USE PIN }\n"
+                            "] }\n"
+                            "DEF Board_2 Transform { translation 0 0 40 scale 2 2 2 children USE BOARD }\n"
+                            "DEF Board_3 Transform { translation 200 0 0 children USE BOARD }\n";
+    const Converted kept = convert(input, dir, {});
+    ASSERT_EQ(kept.run.exitCode, 0) << kept.run.stderrText;
+    ASSERT_GT(kept.report.at("output").value("placements", 0), 1) << "not converted as an assembly";
+    const std::string warning = sizeWarning(kept.run.stderrText);
+    ASSERT_FALSE(warning.empty()) << kept.run.stderrText;
+    EXPECT_NE(kept.run.stderrText.find("--unit mm makes it"), std::string::npos) << kept.run.stderrText;
+    EXPECT_NE(kept.run.stderrText.find("1 warning (1 about the model)"), std::string::npos) << kept.run.stderrText;
+    ASSERT_FALSE(kept.report.at("warnings").empty());
+    EXPECT_NE(kept.report.at("warnings").back().get<std::string>().find(warning), std::string::npos);
+    EXPECT_EQ(kept.report.at("warningCount"), 1);
+
+    // The size of the placed parts is the size of the expanded model.
+    const Converted expanded = convert(input, dir, {"--instances", "expand"});
+    ASSERT_EQ(expanded.run.exitCode, 0) << expanded.run.stderrText;
+    EXPECT_EQ(sizeWarning(expanded.run.stderrText), warning) << expanded.run.stderrText;
+
+    const Converted fine = convert(input, dir, {"--unit", "mm"});
+    ASSERT_EQ(fine.run.exitCode, 0) << fine.run.stderrText;
+    EXPECT_EQ(fine.run.stderrText.find("across"), std::string::npos) << fine.run.stderrText;
+}
+
 // The extent along each axis, from `cadlod info`'s bbox line.
 std::array<double, 3> extentOf(const std::string& path)
 {
