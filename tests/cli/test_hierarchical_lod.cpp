@@ -6,7 +6,17 @@
 #include "cli_runner.h"
 #include "osg_view_probe.h"
 
+#include "hierarchical_lod.h"
+#include "lod_output.h"
+
+#include "convert/lod_model_to_mesh.h"
+#include "lod/lod_chain.h"
 #include "lod/nearest_point.h"
+#include "measure/hausdorff.h"
+#include "vrml/importer.h"
+
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -165,6 +175,97 @@ TEST(CliHierarchicalLod, AFileThatSharesNothingIsClusteredByItsParts)
     const nlohmann::json one = nlohmann::json::parse(readFile(dir + "/one.json"));
     EXPECT_FALSE(one.contains("parts"));
     EXPECT_EQ(one.at("output").at("lodNodes"), one.at("levels").size());  // one chain: a record per level
+}
+
+}  // namespace cadlod::test
+
+namespace cadlod::test {
+namespace {
+
+using flt::Vec3d;
+
+// A part's finest level where a placement puts it.
+flt::Level placedLevel(const flt::InstancedModel& model, const flt::PartPlacement& p)
+{
+    flt::Level level = model.definitions[p.definition].levels.front();
+    for (flt::Part& part : level.parts) {
+        if (p.mirrored())
+            for (flt::Triangle& t : part.triangles)
+                std::swap(t[1], t[2]);
+        for (Vec3d& v : part.positions) {
+            Vec3d w{};
+            for (int r = 0; r < 3; ++r)
+                w[r] = p.matrix[r][0] * v[0] + p.matrix[r][1] * v[1] + p.matrix[r][2] * v[2] + p.matrix[r][3];
+            v = w;
+        }
+    }
+    return level;
+}
+
+// The finest levels of every placement cluster n stands for, its own and its children's.
+void addPlacedParts(const flt::InstancedModel& model, std::size_t n, CoreMesh& m)
+{
+    const flt::PlacementCluster& cluster = model.clusters[n];
+    for (std::size_t p : cluster.placements)
+        mesh_io::levelToMesh(placedLevel(model, model.placements[p]), m);
+    for (std::size_t child : cluster.clusters)
+        addPlacedParts(model, child, m);
+}
+
+void readyForMeasure(CoreMesh& m)
+{
+    vcg::tri::UpdateNormal<CoreMesh>::PerFaceNormalized(m);
+    vcg::tri::UpdateBounding<CoreMesh>::Box(m);
+}
+
+LodSetResult chainFrom(CoreMesh& m, cli::LevelStore& store, double nearest)
+{
+    LodChainOptions o;
+    o.nearestDistance = nearest;
+    CoreMesh scratch;
+    return buildLodChain<CoreMesh>(m, scratch, o, [&](int) -> CoreMesh& { return store.add(); });
+}
+
+}  // namespace
+
+// Every proxy measured against the parts it replaces, at their finest: its symmetric
+// Hausdorff distance to them is within what it may show where it is switched in, one pixel
+// at the cluster's nearest point (switchAtNearestPoint), with 5 % sampling slack.
+TEST(CliHierarchicalLod, EveryProxyIsWithinItsErrorOfThePartsItReplaces)
+{
+    const std::string dir = freshDirectory("hlod_proxies");
+    vrml::ImportOptions keep;
+    keep.instances = vrml::Instances::Keep;
+    vrml::ImportResult imported = vrml::importVrmlFile(writeGrid(dir), keep);
+    ASSERT_TRUE(imported.ok()) << imported.error;
+    const cli::ImportSettings settings;
+    cli::AssemblyConversion c = cli::convertAssembly(
+        imported.scene, "grid", settings, [](CoreMesh& m, cli::LevelStore& store) { return chainFrom(m, store, 0); }, true);
+    cli::HierarchyOptions options;
+    options.tree.leafItems = 16;
+    const cli::HierarchyStats stats = cli::buildHierarchy(c, options, settings, chainFrom);
+    ASSERT_GE(stats.proxyLevels, 2u);
+
+    const double pixelAtOne = 1.0 / projectedErrorDistance(1.0, options.view);
+    std::size_t measured = 0;
+    for (std::size_t n = 0; n < c.model.clusters.size(); ++n) {
+        const flt::PlacementCluster& cluster = c.model.clusters[n];
+        if (cluster.proxies.empty())
+            continue;
+        CoreMesh parts;
+        addPlacedParts(c.model, n, parts);
+        readyForMeasure(parts);
+        for (const flt::Level& proxy : cluster.proxies) {
+            CoreMesh drawn;
+            mesh_io::levelToMesh(proxy, drawn);
+            readyForMeasure(drawn);
+            const double error = symmetricHausdorff(parts, drawn, 20000).max();
+            const double reach = proxy.reachFrom(cluster.center);
+            EXPECT_LE(error, 1.05 * (proxy.switchOut - reach) * pixelAtOne) << proxy.name;
+            ++measured;
+        }
+    }
+    EXPECT_EQ(measured, stats.proxyLevels);
 }
 
 }  // namespace cadlod::test
