@@ -113,14 +113,13 @@ void lodSetParameters(MeshModel&, RichParameterList& par)
 {
     const LodChainOptions chain;
     par.addParam(RichEnum("levelMode", 0, {"By screen-space error (VR)", "Level list (the paper)"}, "Levels by",
-                          "Screen-space error: levels from close up to a few pixels high, each where its "
-                          "measured error is below the pixel error. Level list: the values below."));
+                          "Screen-space error: levels down to a few px high. Level list: the values below."));
     par.addParam(RichString("levels", "50 60 70 80 90", "Level list",
                             "With Level list: one value per level, coarser each time (the paper: 50 60 70 80 90)."));
     par.addParam(RichEnum("levelUnit", 0, {"Reduction %", "Face count"}, "Level list unit",
                           "How the values of the level list are read."));
     par.addParam(RichBool("fromOriginal", false, "List levels from the original",
-                          "With Level list: simplify every level from the original (slower)."));
+                          "Level list: each level from the original."));
     par.addParam(RichFloat("fovY", 45.0f, "Vertical field of view (deg)",
                            "Camera of the simulator, for the switch distances."));
     par.addParam(RichInt("viewportHeight", 1080, "Viewport height (px)",
