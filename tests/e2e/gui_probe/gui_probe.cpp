@@ -308,8 +308,9 @@ Step makeCurrentLast()
     };
 }
 
-// The x positions (px) of every '%' in each log line that starts like a histogram bin
-// ("0.3-0.4"), as the log panel lays them out.
+// Where each bar (run of '#') of each log line that starts like a histogram bin
+// ("0.3-0.4") begins, in px, as the log panel lays it out (lines without a bar are left
+// out).
 Step histogramFacts()
 {
     return [=]() {
@@ -330,10 +331,13 @@ Step histogramFacts()
                 const QString text = b.text().mid(line.textStart(), line.textLength());
                 if (!bin.match(text).hasMatch())
                     continue;
-                QStringList xs;
-                for (int i = text.indexOf('%'); i >= 0; i = text.indexOf('%', i + 1))
-                    xs << QString::number(line.cursorToX(line.textStart() + i), 'f', 1);
-                fact("histogram " + xs.join(' ') + " | " + text.simplified());
+                QStringList starts;
+                for (int i = 0; i < text.size(); ++i)
+                    if (text[i] == '#' && (i == 0 || text[i - 1] != '#'))
+                        starts << QString::number(line.cursorToX(line.textStart() + i), 'f', 1);
+                if (starts.isEmpty())
+                    continue;
+                fact("histogram " + starts.join(' ') + " | " + text.simplified());
                 ++lines;
             }
         }
