@@ -22,7 +22,7 @@ using Steps = std::vector<Step>;
 inline void runSteps(Steps steps, Steps watchers, std::function<void(const QString&)> report)
 {
     constexpr int kTickMs = 200;
-    constexpr qint64 kGiveUpMs = 90000;
+    constexpr qint64 kGiveUpMs = 180000;
     struct State {
         Steps steps, watchers;
         std::function<void(const QString&)> report;
