@@ -42,11 +42,8 @@ QString FilterCadLodPlugin::filterInfo(FilterIDType filter) const
                "The quality mapper or the face quality histogram show the same values. "
                "The log reports mean, min, 5th percentile and the share of faces below 0.1 and 0.3.";
     case FP_CAD_SIMPLIFY:
-        return "Quadric edge collapse for CAD tessellations (Tang et al. 2015): among placements of "
-               "nearly equal cost the one giving the most compact triangles wins. Creases, corners, "
-               "boundaries and part or colour borders give way only where every other collapse costs "
-               "far more; faces never fold. Stops at the reduction % (or face count) unless the max "
-               "error forbids it. The log says what stopped it and what gave way.";
+        return "Quadric edge collapse for CAD meshes (Tang et al. 2015): of placements of nearly equal "
+               "cost, the most compact triangles win; features give way last. The log says what stopped it.";
     case FP_REPORT:
         return "Compares the current layer with the one it was simplified from: face and vertex "
                "counts, the symmetric Hausdorff distance (max, mean, RMS; absolute and in % of the "

@@ -5,11 +5,14 @@
 #include "lod/lod_chain.h"    // buildLodChain<CMeshO>: likewise
 #include "mesh/layer_metadata.h"
 #include "simplify_parameters.h"
+#include "lod/level_names.h"
 
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include <QElapsedTimer>
+
+#include <memory>
 
 namespace cadlod {
 namespace {
@@ -107,20 +110,49 @@ void logLevels(MeshFilterInterface& plugin, const LodSetResult& r, const ViewPar
     }
 }
 
+// Names every level by its distance, shows level 0 alone (the levels lie on top of each
+// other) and lets Export Mesh As propose the input's folder and name for any level.
+void presentLevels(MeshDocument& md, MeshModel& original, MeshModel& level0, const std::vector<MeshModel*>& kept,
+                   const LodSetResult& result)
+{
+    const double metres = metresPerUnit(original.cm);
+    const QFileInfo input(original.fullName().isEmpty() ? original.label() : original.fullName());
+    const std::string base = input.completeBaseName().toStdString();
+    const QString exportName = original.fullName().isEmpty() ? QString() : input.absolutePath() + "/" +
+                                                                              input.completeBaseName() + ".flt";
+    auto present = [&](MeshModel& layer, const LodLevel& l, const std::string& suffix) {
+        const std::string range = levelRangeName(l.level, l.switchOut, l.switchIn, metres);
+        layer.setLabel(QString::fromStdString(levelLabel(base, range, suffix)));
+        if (&layer != &original && !exportName.isEmpty())
+            layer.setFileName(exportName);
+    };
+    const QString suffix = QFileInfo(level0.label()).suffix();
+    present(level0, result.levels[0], suffix.isEmpty() ? ".flt" : "." + suffix.toStdString());
+    for (std::size_t k = 0; k < kept.size(); ++k) {
+        present(*kept[k], result.levels[k + 1], ".flt");
+        kept[k]->visible = false;
+    }
+    level0.visible = true;
+    if (&level0 != &original)
+        original.visible = false;  // the same geometry as its copy, level 0
+    // The views copy every layer's visibility when the layer list changes, not after a
+    // filter: tell them.
+    emit md.meshSetChanged();
+}
+
 }  // namespace
 
 void lodSetParameters(MeshModel&, RichParameterList& par)
 {
     const LodChainOptions chain;
     par.addParam(RichEnum("levelMode", 0, {"By screen-space error (VR)", "Level list (the paper)"}, "Levels by",
-                          "Screen-space error: levels from close up to a few pixels high, each where its "
-                          "measured error is below the pixel error. Level list: the values below."));
+                          "Screen-space error: levels down to a few px high. Level list: the values below."));
     par.addParam(RichString("levels", "50 60 70 80 90", "Level list",
                             "With Level list: one value per level, coarser each time (the paper: 50 60 70 80 90)."));
     par.addParam(RichEnum("levelUnit", 0, {"Reduction %", "Face count"}, "Level list unit",
                           "How the values of the level list are read."));
     par.addParam(RichBool("fromOriginal", false, "List levels from the original",
-                          "With Level list: simplify every level from the original (slower)."));
+                          "Level list: each level from the original."));
     par.addParam(RichFloat("fovY", 45.0f, "Vertical field of view (deg)",
                            "Camera of the simulator, for the switch distances."));
     par.addParam(RichInt("viewportHeight", 1080, "Viewport height (px)",
@@ -185,20 +217,18 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
         LodChainOptions options = readChainOptions(par);
         options.setId = setId;
         options.runTogether = runOnTwoThreads;
-        // The chain simplifies scratch copies of the model's pieces level after level; a
-        // layer has what they need (CMeshO's optional components, enabled like level 0's).
-        std::vector<MeshModel*> scratch;
+        // The chain simplifies scratch copies of the model's pieces level after level. A
+        // MeshModel gives them CMeshO's optional components, enabled like level 0's; it is
+        // never added to the document, so the layer panel and the views never see it.
+        std::vector<std::unique_ptr<MeshModel>> scratch;
         auto newScratch = [&]() -> CMeshO& {
-            MeshModel* layer = md.addNewMesh("", QString("%1 scratch %2").arg(baseName).arg(scratch.size()), false);
-            layer->updateDataMask(level0);
-            layer->updateDataMask(MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK);
-            scratch.push_back(layer);
-            return layer->cm;
+            scratch.push_back(std::make_unique<MeshModel>(&md, "", QString("%1 scratch").arg(baseName)));
+            scratch.back()->updateDataMask(level0);
+            scratch.back()->updateDataMask(MeshModel::MM_VERTFACETOPO | MeshModel::MM_VERTMARK);
+            return scratch.back()->cm;
         };
         CMeshO& working = newScratch();
         result = buildLodChain<CMeshO>(level0->cm, working, options, newLevel, cb, newScratch);
-        for (MeshModel* layer : scratch)
-            md.delMesh(layer);
     } else {
         LodSetOptions options = readListOptions(par);
         options.setId = setId;
@@ -223,14 +253,9 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
     }
     for (const std::string& warning : result.warnings)
         plugin.Log(GLLogStream::WARNING, "CAD LOD set: %s", warning.c_str());
-    for (std::size_t k = 0; k < kept.size(); ++k) {
-        const LodLevel& l = result.levels[k + 1];
-        kept[k]->setLabel(QString("%1 LOD%2 %3-%4")  // drawn from ... to ... (model units)
-                              .arg(baseName)
-                              .arg(k + 1)
-                              .arg(distanceText(l.switchOut, 3), distanceText(l.switchIn, 3)));
-        kept[k]->UpdateBoxAndNormals();
-    }
+    for (MeshModel* layer : kept)
+        layer->UpdateBoxAndNormals();
+    presentLevels(md, original, *level0, kept, result);
     logLevels(plugin, result, view, timer.elapsed() / 1000.0);
     return true;
 }

@@ -7,6 +7,9 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 
 #include <cstdio>
+#include <string>
+#include <tuple>
+#include <vector>
 
 namespace cadlod {
 namespace {
@@ -45,6 +48,23 @@ std::string unrelatedBecause(CMeshO& current, CMeshO& original)
     return whyNotASimplification(original.bbox, current.bbox);
 }
 
+// MeshLab's log panel is HTML in a proportional font: runs of spaces collapse (figure
+// spaces too), and a '#' is not as wide as a space, so no column after a bar lines up.
+// Each line starts with text of one width (digits are all as wide), then the bar, then
+// its value: "0.3-0.4 |## 10.0 %".
+std::vector<std::string> histogramForLog(const CompactnessHistogram& h, std::size_t faces)
+{
+    std::vector<std::string> lines;
+    for (std::size_t bin = 0; bin < h.size(); ++bin) {
+        const double share = faces ? 100.0 * double(h[bin]) / double(faces) : 0.0;
+        char line[96];
+        std::snprintf(line, sizeof line, "%.1f-%.1f |%s %.1f %%", bin / 10.0, (bin + 1) / 10.0,
+                      std::string(std::size_t(share / 5.0 + 0.5), '#').c_str(), share);
+        lines.push_back(line);
+    }
+    return lines;
+}
+
 void logReport(MeshFilterInterface& plugin, const MeshModel& current, const MeshModel& original,
                const SimplificationReport& r)
 {
@@ -62,8 +82,12 @@ void logReport(MeshFilterInterface& plugin, const MeshModel& current, const Mesh
     for (const auto& [name, s] : {std::pair{"before", r.before}, std::pair{"after", r.after}})
         plugin.Log("  compactness %s: mean %.4f, min %.4f, p5 %.4f, below 0.1: %.2f%%, below 0.3: %.2f%%", name,
                    s.mean, s.min, s.p5, 100.0 * s.shareBelow01, 100.0 * s.shareBelow03);
-    for (const std::string& line : histogramLines(r))
-        plugin.Log("  %s", line.c_str());
+    for (const auto& [name, h, faces] : {std::tuple{"before", r.histogramBefore, r.before.faces},
+                                         std::tuple{"after", r.histogramAfter, r.after.faces}}) {
+        plugin.Log("  compactness %s, share of the faces per tenth (# = 5 %%):", name);
+        for (const std::string& line : histogramForLog(h, faces))
+            plugin.Log("%s", line.c_str());
+    }
 }
 
 }  // namespace

@@ -50,9 +50,9 @@ void cadSimplifyParameters(MeshModel& m, RichParameterList& par)
                            "No collapse moves the surface further than this, e.g. 0.0001 (0: off)."));
     addPlacementParameters(par);
     par.addParam(RichBool("selectedOnly", m.cm.sfn > 0, "Selected faces only",
-                          "Only collapse vertices whose faces are all selected."));
+                          "Collapse only inside the selection."));
     par.addParam(RichBool("autoClean", true, "Post-simplification cleaning",
-                          "Remove null faces, duplicated and unreferenced vertices, compact the layer."));
+                          "Remove null faces and unused vertices."));
 }
 
 bool cadSimplify(MeshFilterInterface& plugin, MeshModel& m, const RichParameterList& par, vcg::CallBackPos* cb,

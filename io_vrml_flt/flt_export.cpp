@@ -93,7 +93,7 @@ void fltSaveParameters(MeshModel&, RichParameterList& par)
     par.addParam(RichEnum(kColors, 0, {"As the layer has them", "One colour per part"}, "Colours",
                           "Face (and vertex) colours as the layer has them, or one per CAD part."));
     par.addParam(RichBool(kWholeSet, true, "Write the whole LOD set",
-                          "Every level of the layer's LOD set, or only this layer."));
+                          "All levels of the layer's LOD set; off: this layer."));
 }
 
 int fltExportCapability()

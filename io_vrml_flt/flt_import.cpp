@@ -6,6 +6,7 @@
 
 #include "openflight/flt_reader.h"
 #include "convert/lod_model_to_mesh.h"
+#include "mesh/layer_metadata.h"
 
 #include <QElapsedTimer>
 
@@ -35,6 +36,18 @@ void fillLayer(const flt::Level& level, MeshModel& m, int& mask)
         m.updateDataMask(MeshModel::MM_VERTCOLOR);
         mask |= vcg::tri::io::Mask::IOM_VERTCOLOR;
     }
+}
+
+double metresPer(flt::Units units)
+{
+    switch (units) {
+    case flt::Units::Meters: return 1.0;
+    case flt::Units::Kilometers: return 1000.0;
+    case flt::Units::Feet: return 0.3048;
+    case flt::Units::Inches: return 0.0254;
+    case flt::Units::NauticalMiles: return 1852.0;
+    }
+    return 0.0;
 }
 
 }  // namespace
@@ -77,6 +90,7 @@ bool openOpenFlight(MeshIOInterface& plugin, const QString& fileName, MeshModel&
     }
     const std::size_t chosen = asked < 0 ? flt::finestLevel(model) : std::size_t(asked);
     fillLayer(model.levels[chosen], m, mask);
+    setMetresPerUnit(m.cm, metresPer(model.units));
     report(plugin, GLLogStream::FILTER, QString::asprintf("OpenFlight %s (revision %d, %s): %zu LOD level(s), opened level %zu \"%s\" with %zu part(s), "
                "%d vertices, %d triangles; %zu face(s) skipped, %zu record(s) not interpreted, %lld ms",
                qUtf8Printable(fileName), stats.formatRevision, flt::unitsName(model.units), model.levels.size(),

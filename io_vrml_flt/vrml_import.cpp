@@ -80,7 +80,8 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     options.recomputeNormals = par.hasParameter(kNormals) && par.getEnum(kNormals) == 1;
     options.upAxis = par.hasParameter(kUpAxis) && par.getEnum(kUpAxis) == 1 ? vrml::UpAxis::YUpToZUp : vrml::UpAxis::Keep;
     options.detectKicadUnits = !par.hasParameter(kKicadUnits) || par.getBool(kKicadUnits);
-    if (cb) options.progress = [cb](double f) { cb(int(60 * f), "Reading VRML"); };
+    ProgressReporter progress(cb);
+    if (cb) options.progress = [&progress](double f) { progress(int(60 * f), "Reading VRML"); };
 
     vrml::ImportResult result = vrml::importVrmlFile(fileName.toStdString(), options);
     if (!result.ok()) {
@@ -102,6 +103,8 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     toMesh.mergeTolerance = par.hasParameter(kMergeTolerance) ? par.getFloat(kMergeTolerance) : 0.0f;
     mesh_io::SceneToMeshStats built;
     const int merged = mesh_io::sceneToMesh(scene, m.cm, toMesh, cb, &built);
+    progress(90, "Building mesh");  // the last step the reporter times finish() from
+    setMetresPerUnit(m.cm, 1.0);  // VRML's unit; Unit scale is how a file in mm becomes one
 
     const double seconds = std::max(1e-6, timer.elapsed() / 1000.0);
     char line[1024];
@@ -123,7 +126,7 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
                    " more times; a MeshLab layer is one mesh, so each is a copy here. `cadlod convert` keeps them "
                    "as OpenFlight instances, each part simplified once.");
     logDiagnostics(plugin, scene.diagnostics);
-    if (cb) cb(100, "VRML import done");
+    progress.finish("VRML opened");  // replaces "Reading VRML" in the status bar
     return true;
 }
 

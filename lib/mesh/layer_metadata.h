@@ -57,6 +57,24 @@ typename MeshType::template PerMeshAttributeHandle<LodLevel> lodLevelHandle(Mesh
     return vcg::tri::Allocator<MeshType>::template GetPerMeshAttribute<LodLevel>(m, kLodAttribute);
 }
 
+// How many metres one model unit is, as the importer knew it (VRML's unit is the metre,
+// an OpenFlight header names its own); 0 when unknown.
+inline constexpr const char* kMetresPerUnitAttribute = "cadlod_metres_per_unit";
+
+template <class MeshType>
+void setMetresPerUnit(MeshType& m, double metres)
+{
+    vcg::tri::Allocator<MeshType>::template GetPerMeshAttribute<double>(m, kMetresPerUnitAttribute)() = metres;
+}
+
+template <class MeshType>
+double metresPerUnit(MeshType& m)
+{
+    if (!vcg::tri::HasPerMeshAttribute(m, kMetresPerUnitAttribute))
+        return 0.0;
+    return vcg::tri::Allocator<MeshType>::template GetPerMeshAttribute<double>(m, kMetresPerUnitAttribute)();
+}
+
 // Takes the mesh out of its LOD set: a level whose geometry changed (simplified again, ...)
 // no longer matches its record (faces, error, switch ranges).
 template <class MeshType>
