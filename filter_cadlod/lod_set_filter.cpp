@@ -118,8 +118,9 @@ void presentLevels(MeshDocument& md, MeshModel& original, MeshModel& level0, con
     const double metres = metresPerUnit(original.cm);
     const QFileInfo input(original.fullName().isEmpty() ? original.label() : original.fullName());
     const std::string base = input.completeBaseName().toStdString();
+    // Never the input's own name: exporting a level must not overwrite what the user opened.
     const QString exportName = original.fullName().isEmpty() ? QString() : input.absolutePath() + "/" +
-                                                                              input.completeBaseName() + ".flt";
+                                                                              input.completeBaseName() + "_lod.flt";
     auto present = [&](MeshModel& layer, const LodLevel& l, const std::string& suffix) {
         const std::string range = levelRangeName(l.level, l.switchOut, l.switchIn, metres);
         layer.setLabel(QString::fromStdString(levelLabel(base, range, suffix)));

@@ -28,10 +28,19 @@ const char* const kColors = "colors";
 const flt::Units kUnitChoices[] = {flt::Units::Meters, flt::Units::Kilometers, flt::Units::Feet,
                                    flt::Units::Inches, flt::Units::NauticalMiles};
 
+// A layer's name in the file. An LOD level's label ends in a suffix for the layer panel to
+// drop (lod/level_names.h), and its '≥' is written ">=", so that record names stay ASCII.
+std::string recordName(MeshModel& mm)
+{
+    if (!hasLodLevel(mm.cm))
+        return mm.label().toStdString();
+    return QFileInfo(mm.label()).completeBaseName().replace(QString::fromUtf8("\u2265"), ">=").toStdString();
+}
+
 mesh_io::LevelOptions levelOptions(MeshModel& mm, bool withUvs, bool faceColors)
 {
     mesh_io::LevelOptions o;
-    o.label = mm.label().toStdString();
+    o.label = recordName(mm);
     o.faceColors = faceColors && mm.hasDataMask(MeshModel::MM_FACECOLOR);
     // Vertex colours only where the layer has them (a VRML file's per-vertex Color, a PLY's).
     o.vertexColors = faceColors && mm.hasDataMask(MeshModel::MM_VERTCOLOR);
@@ -124,7 +133,7 @@ bool saveOpenFlight(MeshIOInterface& plugin, const QString& fileName, MeshModel&
         }
     } else {
         flt::Level level = mesh_io::meshToLevel(m.cm, levelOptions(m, withUvs, faceColors), stats);
-        level.name = m.label().toStdString();
+        level.name = recordName(m);
         model.levels.push_back(std::move(level));
     }
     if (model.triangleCount() == 0) {
