@@ -3,6 +3,8 @@
 // triangles per LOD level, and the frame rate along a fixed camera path that orbits the
 // model while backing away from it, log-spaced, across every OpenFlight LOD switch
 // distance (bench/lod_path), with the triangles the LOD nodes select in each frame.
+// `--path inside` moves the eye through the model instead, over the 4x4x2 grid of
+// bench/view_error's inside path, so both tools see the same viewer.
 // `--level K` shows only level K of every LOD (or use a plain mesh file) to measure one
 // level alone; `--shot FILE` writes one shaded (optionally wireframe) picture instead.
 // Output: one "key value" line per figure, for scripts.
@@ -37,6 +39,8 @@ using cadlod::lodpath::LodChildRef;
 
 constexpr double kFovY = 45.0;  // degrees, like the LOD-set filter's default
 
+enum class PathKind { Orbit, Inside };
+
 struct Options {
     std::string model;
     int frames = 240;
@@ -54,6 +58,8 @@ struct Options {
     std::string shot;
     bool wire = false;
     bool render = true;         // false: load and count only
+    PathKind path = PathKind::Orbit;
+    osg::BoundingBox box;       // valid: replaces the model's own box (--box)
 };
 
 [[noreturn]] void usage(const char* why)
@@ -61,7 +67,8 @@ struct Options {
     std::fprintf(stderr,
                  "osg_render: %s\n"
                  "usage: osg_render MODEL [--frames N] [--size WxH] [--level K] [--near D --far D]\n"
-                 "                  [--elevation DEG] [--crease DEG] [--no-render]\n"
+                 "                  [--elevation DEG] [--crease DEG] [--path orbit|inside]\n"
+                 "                  [--box X0,Y0,Z0,X1,Y1,Z1] [--no-render]\n"
                  "       osg_render MODEL --shot OUT.png [--wire] [--azimuth DEG] [--distance RADII]\n"
                  "                  [--focus FX,FY,FZ] ...\n"
                  "       (--up x|y|z: the model axis shown upwards, default z)\n",
@@ -87,6 +94,15 @@ int axisIndex(const std::string& name)
     usage("--up wants x, y or z");
 }
 
+PathKind pathKind(const std::string& name)
+{
+    if (name == "orbit")
+        return PathKind::Orbit;
+    if (name == "inside")
+        return PathKind::Inside;
+    usage("--path wants orbit or inside");
+}
+
 Options parseOptions(int argc, char** argv)
 {
     Options o;
@@ -102,9 +118,17 @@ Options parseOptions(int argc, char** argv)
         else if (a == "--crease") o.creaseAngle = number(i, argc, argv);
         else if (a == "--wire") o.wire = true;
         else if (a == "--up" && i + 1 < argc) o.upAxis = axisIndex(argv[++i]);
+        else if (a == "--path" && i + 1 < argc) o.path = pathKind(argv[++i]);
         else if (a == "--focus" && i + 1 < argc) {
             if (std::sscanf(argv[++i], "%lf,%lf,%lf", &o.focus.x(), &o.focus.y(), &o.focus.z()) != 3)
                 usage("--focus wants FX,FY,FZ (fractions of the bounding box)");
+        }
+        else if (a == "--box" && i + 1 < argc) {
+            osg::Vec3d lo, hi;
+            if (std::sscanf(argv[++i], "%lf,%lf,%lf,%lf,%lf,%lf", &lo.x(), &lo.y(), &lo.z(), &hi.x(), &hi.y(),
+                            &hi.z()) != 6)
+                usage("--box wants X0,Y0,Z0,X1,Y1,Z1");
+            o.box.set(lo, hi);
         }
         else if (a == "--no-render") o.render = false;
         else if (a == "--shot" && i + 1 < argc) o.shot = argv[++i];
@@ -290,7 +314,7 @@ int writeShot(const Options& o, osg::Node* model, const osg::BoundingBox& box)
 
 // The default path sweeps every level (see cadlod::lodpath::pathOverEveryLevel); --near and
 // --far override either end.
-void choosePath(Options& o, const std::vector<Level>& levels, double radius)
+void chooseOrbitEnds(Options& o, const std::vector<Level>& levels, double radius)
 {
     const cadlod::lodpath::PathEnds ends = cadlod::lodpath::pathOverEveryLevel(levels, radius, kFovY, o.height);
     if (o.nearDistance <= 0)
@@ -310,25 +334,94 @@ double pathDistance(const Options& o, int i)
 
 double pathAzimuth(const Options& o, int i) { return 360.0 * i / o.frames; }
 
+// Where the eye is in one frame and the point it looks at.
+struct Pose {
+    osg::Vec3d eye;
+    osg::Vec3d target;
+};
+
+std::vector<Pose> orbitPath(const Options& o, const osg::Vec3d& center)
+{
+    std::vector<Pose> poses;
+    for (int i = 0; i < o.frames; ++i)
+        poses.push_back({eyePosition(center, o.upAxis, pathDistance(o, i), pathAzimuth(o, i), o.elevation), center});
+    return poses;
+}
+
+// bench/view_error's inside points, (i + 0.5) / 4, (j + 0.5) / 4, (k + 0.5) / 2 of the box,
+// in an order where each is next to the one before (rows back and forth, the upper layer
+// walked back over the lower), so that the eye glides between them rather than jumps.
+std::vector<osg::Vec3d> insideGridInOrder(const osg::BoundingBox& box)
+{
+    const osg::Vec3d size = box._max - box._min;
+    std::vector<osg::Vec3d> points;
+    int row = 0;
+    for (int k = 0; k < 2; ++k)
+        for (int jj = 0; jj < 4; ++jj, ++row) {
+            const int j = k == 0 ? jj : 3 - jj;
+            for (int ii = 0; ii < 4; ++ii) {
+                const int i = row % 2 == 0 ? ii : 3 - ii;
+                points.push_back(osg::Vec3d(box._min) + osg::Vec3d(size.x() * (i + 0.5) / 4, size.y() * (j + 0.5) / 4,
+                                                                   size.z() * (k + 0.5) / 2));
+            }
+        }
+    return points;
+}
+
+// The point at arc length `s` along the polyline through `points`.
+osg::Vec3d alongPolyline(const std::vector<osg::Vec3d>& points, double s)
+{
+    for (std::size_t p = 1; p < points.size(); ++p) {
+        const double step = (points[p] - points[p - 1]).length();
+        if (s <= step || p + 1 == points.size())
+            return points[p - 1] + (points[p] - points[p - 1]) * (step > 0 ? std::min(1.0, s / step) : 0.0);
+        s -= step;
+    }
+    return points.front();
+}
+
+double polylineLength(const std::vector<osg::Vec3d>& points)
+{
+    double length = 0;
+    for (std::size_t p = 1; p < points.size(); ++p)
+        length += (points[p] - points[p - 1]).length();
+    return length;
+}
+
+// The frames spread evenly along the grid's polyline, the eye looking at the box's centre:
+// the grid keeps off the centre's height, so the view direction never runs along the up axis.
+std::vector<Pose> insidePath(const Options& o, const osg::BoundingBox& box)
+{
+    const std::vector<osg::Vec3d> grid = insideGridInOrder(box);
+    const double length = polylineLength(grid);
+    std::vector<Pose> poses;
+    for (int i = 0; i < o.frames; ++i)
+        poses.push_back({alongPolyline(grid, length * i / (o.frames - 1)), osg::Vec3d(box.center())});
+    return poses;
+}
+
 // What the LOD nodes select in every frame of the path: the mean triangles per frame (all
 // frames, and those with the eye outside the bounding sphere), and for each level the frames
-// that drew it (first and last, with their distances). Counted
-// apart from the timed frames, which it would slow down.
-void printTrianglesAlongPath(const Options& o, cadlod::lodpath::LodPathCounter& counter, const osg::Vec3d& center,
-                             double radius)
+// that drew it (first and last, with the eye's distances to the centre). Counted apart from
+// the timed frames, which it would slow down.
+void printTrianglesAlongPath(const std::vector<Pose>& poses, cadlod::lodpath::LodPathCounter& counter,
+                             const osg::BoundingSphere& bs)
 {
     std::vector<osg::Vec3d> eyes;
-    for (int i = 0; i < o.frames; ++i)
-        eyes.push_back(eyePosition(center, o.upAxis, pathDistance(o, i), pathAzimuth(o, i), o.elevation));
+    for (const Pose& pose : poses)
+        eyes.push_back(pose.eye);
     const cadlod::lodpath::PathTally tally = counter.walk(eyes);
-    std::printf("path_mean_triangles %.1f\npath_frames_drawing_nothing %d\n", tally.meanTriangles(),
-                tally.framesDrawingNothing);
+    const auto [fewest, most] = std::minmax_element(tally.trianglesPerFrame.begin(), tally.trianglesPerFrame.end());
+    std::printf("path_mean_triangles %.1f\npath_min_triangles %zu\npath_max_triangles %zu\n"
+                "path_frames_drawing_nothing %d\n",
+                tally.meanTriangles(), *fewest, *most, tally.framesDrawingNothing);
+    const auto distance = [&](int frame) { return (eyes[std::size_t(frame)] - osg::Vec3d(bs.center())).length(); };
     // Levels switched in closer than the bounding radius are only drawn with the eye inside
     // the model; the mean over the other frames is what a viewer outside it gets.
     double outsideSum = 0;
     int outsideFrames = 0;
-    for (int i = 0; i < o.frames; ++i)
-        if (pathDistance(o, i) >= radius) {
+    for (int i = 0; i < int(eyes.size()); ++i)
+        if (distance(i) >= bs.radius()) {
             outsideSum += double(tally.trianglesPerFrame[std::size_t(i)]);
             ++outsideFrames;
         }
@@ -338,27 +431,36 @@ void printTrianglesAlongPath(const Options& o, cadlod::lodpath::LodPathCounter& 
         const cadlod::lodpath::LevelOnPath& on = tally.levels[k];
         std::printf("path_level %zu frames %d first %d last %d", k, on.frames, on.firstFrame, on.lastFrame);
         if (on.frames > 0)
-            std::printf(" from %.6g to %.6g", pathDistance(o, on.firstFrame), pathDistance(o, on.lastFrame));
+            std::printf(" from %.6g to %.6g", distance(on.firstFrame), distance(on.lastFrame));
         std::printf("\n");
     }
 }
 
 void printPath(const Options& o)
 {
-    std::printf("path_near %.6g\npath_far %.6g\nframes %d\n", o.nearDistance, o.farDistance, o.frames);
+    if (o.path == PathKind::Orbit)
+        std::printf("path_kind orbit\npath_near %.6g\npath_far %.6g\n", o.nearDistance, o.farDistance);
+    else
+        std::printf("path_kind inside\n");
+    std::printf("frames %d\n", o.frames);
 }
 
-int measureFrameRate(const Options& o, osg::Node* model, const osg::BoundingSphere& bs)
+void look(osgViewer::Viewer& viewer, const Pose& pose, int upAxis)
+{
+    viewer.getCamera()->setViewMatrixAsLookAt(pose.eye, pose.target, unitAxis(upAxis));
+}
+
+int measureFrameRate(const Options& o, osg::Node* model, const std::vector<Pose>& poses)
 {
     osg::ref_ptr<osgViewer::Viewer> viewer = makeViewer(o, model);
     for (int i = 0; i < 5; ++i) {  // first frames compile display lists and shaders
-        lookAt(*viewer, bs.center(), o.upAxis, pathDistance(o, i * (o.frames - 1) / 4), 0, o.elevation);
+        look(*viewer, poses[std::size_t(i * (o.frames - 1) / 4)], o.upAxis);
         viewer->frame();
     }
     const double cpuStart = cpuSeconds();
     const auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < o.frames; ++i) {
-        lookAt(*viewer, bs.center(), o.upAxis, pathDistance(o, i), pathAzimuth(o, i), o.elevation);
+    for (const Pose& pose : poses) {
+        look(*viewer, pose, o.upAxis);
         viewer->frame();
     }
     const double seconds = secondsSince(start);
@@ -367,6 +469,14 @@ int measureFrameRate(const Options& o, osg::Node* model, const osg::BoundingSphe
     std::printf("cpu_seconds %.4f\nfps_cpu %.2f\n", cpu, cpu > 0 ? o.frames / cpu : 0.0);
     std::printf("peak_rss_kb %.0f\n", peakRssKb());
     return 0;
+}
+
+std::vector<Pose> cameraPath(Options& o, const std::vector<Level>& levels, const osg::BoundingBox& box)
+{
+    if (o.path == PathKind::Inside)
+        return insidePath(o, box);
+    chooseOrbitEnds(o, levels, box.radius());
+    return orbitPath(o, box.center());
 }
 
 }  // namespace
@@ -396,9 +506,12 @@ int main(int argc, char** argv)
 
     osg::ComputeBoundsVisitor bounds;
     model->accept(bounds);
-    const osg::BoundingBox& box = bounds.getBoundingBox();
+    // OSG bounds a transformed subgraph by its transformed box corners, which overshoots
+    // for rotated parts: --box lets two files of the same model share one camera path.
+    const osg::BoundingBox box = o.box.valid() ? o.box : bounds.getBoundingBox();
     const osg::BoundingSphere bs(box.center(), box.radius());
-    std::printf("radius %.6g\n", bs.radius());
+    std::printf("radius %.6g\nbox %.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", bs.radius(), box.xMin(), box.yMin(), box.zMin(),
+                box.xMax(), box.yMax(), box.zMax());
     std::fflush(stdout);
     if (!box.valid()) {
         std::fprintf(stderr, "osg_render: %s has no geometry\n", o.model.c_str());
@@ -406,9 +519,9 @@ int main(int argc, char** argv)
     }
     if (!o.shot.empty())
         return o.render ? writeShot(o, model.get(), box) : 0;
-    choosePath(o, levels, bs.radius());
+    const std::vector<Pose> poses = cameraPath(o, levels, box);
     printPath(o);
-    printTrianglesAlongPath(o, counter, bs.center(), bs.radius());
+    printTrianglesAlongPath(poses, counter, bs);
     std::fflush(stdout);
-    return o.render ? measureFrameRate(o, model.get(), bs) : 0;
+    return o.render ? measureFrameRate(o, model.get(), poses) : 0;
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Smoke test of osg_render (ctest, xvfb fixture): a two-triangle PLY and a two-level LOD set
 # written by paper_measure load, count and render, the default camera path draws both
-# levels, a picture is written, and a level that does not exist is refused.
+# levels, the inside path draws and times its frames, a picture is written, and a level
+# or path that does not exist is refused.
 #   osg_render_smoke.sh OSG_RENDER PAPER_MEASURE DISPLAY_FILE SCRATCH_DIR
 set -euo pipefail
 render=$1 measure=$2 display_file=$3 dir=$4
@@ -38,5 +39,10 @@ awk '$1 == "level" && $2 == 1 && $4 < 16 && $4 > 0 { ok = 1 } END { exit !ok }' 
 awk '$1 == "path_level" && $4 > 0 { n++ } END { exit n != 2 }' "$dir/set.out" ||
   fail "the default camera path should draw both levels: $(grep path_ "$dir/set.out")"
 "$render" "$dir/lodset.flt" --level 1 --frames 10 --size 64x48 >/dev/null || fail "--level 1 refused"
+"$render" "$dir/lodset.flt" --path inside --frames 10 --size 64x48 >"$dir/inside.out"
+awk '$1 == "path_kind" && $2 == "inside" { k = 1 } $1 == "path_mean_triangles" && $2 > 0 { t = 1 }
+     $1 == "fps_cpu" && $2 > 0 { f = 1 } END { exit !(k && t && f) }' "$dir/inside.out" ||
+  fail "the inside path should draw and time frames: $(cat "$dir/inside.out")"
+if "$render" "$dir/lodset.flt" --path around --no-render >/dev/null 2>&1; then fail "--path around accepted"; fi
 if "$render" "$dir/lodset.flt" --level 2 --no-render >/dev/null 2>&1; then fail "--level 2 accepted"; fi
 echo "osg_render smoke test passed"

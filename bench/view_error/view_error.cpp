@@ -8,7 +8,8 @@
 // the chain's contract the error is 1 px at s). Prints per path the worst and mean worst
 // error, the triangles drawn as a share of level 0 and the drawables; with --estimate REF, also
 // the share the per-cluster estimate of REF's chain draws (cluster_estimate.h) and the ratio of
-// the two; with --walk-csv, every walk point's figures.
+// the two; with --walk-csv, every walk point's figures; with --box, the paths are laid in
+// that box rather than the model's own.
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
 #include <osg/Geometry>
@@ -145,7 +146,19 @@ void printPath(const Model& model, const Path& path, const PathTotals& totals)
     std::printf("\n");
 }
 
-int measure(const std::string& file, const ReferenceChain* reference, WalkCsv& walkCsv)
+// The model's box as OSG bounds it, unless --box gave one: OSG bounds a transformed subgraph
+// by its transformed box corners, which overshoots for rotated parts, so two files of the
+// same model (one node, HLOD) share their paths only through a box given to both.
+osg::BoundingBox boxOf(const cadlod::test::OsgViewProbe& probe, const std::vector<double>& given)
+{
+    if (given.size() == 6)
+        return osg::BoundingBox(given[0], given[1], given[2], given[3], given[4], given[5]);
+    const auto box = probe.bounds();
+    return osg::BoundingBox(box[0][0], box[0][1], box[0][2], box[1][0], box[1][1], box[1][2]);
+}
+
+int measure(const std::string& file, const ReferenceChain* reference, const std::vector<double>& givenBox,
+            WalkCsv& walkCsv)
 {
     Model model;
     model.file = file;
@@ -155,8 +168,7 @@ int measure(const std::string& file, const ReferenceChain* reference, WalkCsv& w
         return 1;
     }
     model.levelZero = double(std::max<std::size_t>(1, model.osg->finestTriangles()));
-    const auto box = model.osg->bounds();
-    const osg::BoundingBox bounds(box[0][0], box[0][1], box[0][2], box[1][0], box[1][1], box[1][2]);
+    const osg::BoundingBox bounds = boxOf(*model.osg, givenBox);
     if (reference)
         model.clusters = std::make_unique<ClusterGrid>(*reference, bounds);
     for (const Path& path : paths(bounds)) {
@@ -173,10 +185,12 @@ int main(int argc, char** argv)
     CLI::App app{"The error on screen of OpenFlight LOD models wherever the viewer stands"};
     std::vector<std::string> files;
     std::string estimateFile, walkCsvFile;
+    std::string boxText;
     app.add_option("files", files, "OpenFlight files to measure")->required();
     app.add_option("--estimate", estimateFile,
                    "a one-LOD-node chain of the same model: compare with its per-cluster estimate");
     app.add_option("--walk-csv", walkCsvFile, "write one row per walk eye point and file");
+    app.add_option("--box", boxText, "X0,Y0,Z0,X1,Y1,Z1: the box the paths are laid in, instead of the model's");
     CLI11_PARSE(app, argc, argv);
 
     ReferenceChain reference;
@@ -185,6 +199,14 @@ int main(int argc, char** argv)
         std::fprintf(stderr, "view_error: %s\n", error.c_str());
         return 1;
     }
+    std::vector<double> box(6);
+    if (!boxText.empty() && std::sscanf(boxText.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &box[0], &box[1], &box[2],
+                                        &box[3], &box[4], &box[5]) != 6) {
+        std::fprintf(stderr, "view_error: --box wants X0,Y0,Z0,X1,Y1,Z1\n");
+        return 2;
+    }
+    if (boxText.empty())
+        box.clear();
     WalkCsv walkCsv;
     if (!walkCsvFile.empty() && !walkCsv.open(walkCsvFile)) {
         std::fprintf(stderr, "view_error: cannot write %s\n", walkCsvFile.c_str());
@@ -192,6 +214,6 @@ int main(int argc, char** argv)
     }
     int rc = 0;
     for (const std::string& file : files)
-        rc |= measure(file, estimateFile.empty() ? nullptr : &reference, walkCsv);
+        rc |= measure(file, estimateFile.empty() ? nullptr : &reference, box, walkCsv);
     return rc;
 }
