@@ -71,15 +71,16 @@ const Rgba& triangleColour(const flt::Part& part, std::size_t t)
     return part.hasVertexColors() ? part.vertexColors[part.triangles[t][0]] : part.colorOf(t);
 }
 
-// A proxy level as one part whose vertices carry the colours: one Mesh record, so one draw
-// call, however many colours it merged (a Mesh record has one colour of its own). A vertex
-// where colours meet is written once per colour. Far off no one picks a part by its name.
-flt::Level asOneDrawable(flt::Level level)
+// A level as one part named `name` whose vertices carry the colours: one Mesh record, so
+// one draw call, however many colours it has (a Mesh record has one colour of its own). A
+// vertex where colours meet is written once per colour. A user picks a placement, never
+// one colour of a part.
+flt::Level asOneDrawable(flt::Level level, const std::string& name)
 {
     if (level.parts.size() < 2 && (level.parts.empty() || !level.parts.front().hasTriangleColors()))
         return level;
     flt::Part one;
-    one.name = "proxy";
+    one.name = name;
     one.color = level.parts.front().color;
     const bool normals = std::all_of(level.parts.begin(), level.parts.end(),
                                      [](const flt::Part& p) { return p.hasNormals(); });
@@ -197,6 +198,7 @@ public:
 
     HierarchyStats build()
     {
+        drawPartsInOneCall();
         std::vector<Box3> boxes;
         for (const flt::PartPlacement& p : c_.model.placements)
             boxes.push_back(placedBox(c_.model.definitions[p.definition].levels.front(), p.matrix));
@@ -212,6 +214,19 @@ public:
     }
 
 private:
+    // Every level of every part (and of its chunks) one drawable: near the eye the parts are
+    // drawn one by one, and their colours would multiply the draw calls.
+    void drawPartsInOneCall()
+    {
+        for (flt::PartDefinition& definition : c_.model.definitions) {
+            for (flt::Level& level : definition.levels)
+                level = asOneDrawable(std::move(level), definition.name);
+            for (std::vector<flt::Level>& chunk : definition.chunks)
+                for (flt::Level& level : chunk)
+                    level = asOneDrawable(std::move(level), definition.name);
+        }
+    }
+
     // Where a level of this error and reach is switched in, at the cluster's nearest point.
     double switchDistance(double error, double reach) const
     {
@@ -351,7 +366,7 @@ private:
         flt::LodModel levels = lodMeshesToModel(meshes, result.levels.front().setId, "proxy", skipped);
         for (std::size_t k = 0; k < levels.levels.size() && k < result.levels.size(); ++k) {
             Candidate candidate;
-            candidate.level = asOneDrawable(std::move(levels.levels[k]));
+            candidate.level = asOneDrawable(std::move(levels.levels[k]), "proxy");
             moveTo(candidate.level, work.centre);
             candidate.error = inputError + result.levels[k].hausdorffMax;
             candidate.reach = candidate.level.reachFrom(work.centre);
