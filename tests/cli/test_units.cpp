@@ -226,6 +226,15 @@ void expectSameLevels(const nlohmann::json& levels, const nlohmann::json& refere
     }
 }
 
+// The file written in r's unit: as many bytes as in ref's, its extent in proportion.
+void expectTheSameFileInProportion(const std::string& dir, const InUnit& r, const InUnit& ref)
+{
+    EXPECT_EQ(r.bytes, ref.bytes) << r.unit;
+    const std::array<double, 3> e = extentOf(dir + "/" + r.unit + ".flt"), m = extentOf(dir + "/" + ref.unit + ".flt");
+    for (int axis = 0; axis < 3; ++axis)
+        EXPECT_NEAR(e[axis] / r.metres, m[axis] / ref.metres, 1e-4 * m[axis] / ref.metres) << r.unit;
+}
+
 const std::vector<std::pair<std::string, double>> kThreeUnits{{"mm", 0.001}, {"0.1in", 0.00254}, {"m", 1.0}};
 
 // Scaling the input must not change the simplification: the shaft in millimetres, in tenths
@@ -245,10 +254,7 @@ TEST(CliUnits, TheUnitScalesTheLevelsAndChangesNothingElse)
         expectSameLevels(r.converted.report.at("levels"), mm.converted.report.at("levels"), r, mm);
         EXPECT_NEAR(inFileUnits(r.converted.report.at("modelSize"), r), inFileUnits(mm.converted.report.at("modelSize"), mm),
                     1e-6);
-        EXPECT_EQ(r.bytes, mm.bytes) << r.unit;
-        const std::array<double, 3> e = extentOf(dir + "/" + r.unit + ".flt"), m = extentOf(dir + "/mm.flt");
-        for (int axis = 0; axis < 3; ++axis)
-            EXPECT_NEAR(e[axis] / r.metres, m[axis] / mm.metres, 1e-4 * m[axis] / mm.metres) << r.unit;
+        expectTheSameFileInProportion(dir, r, mm);
     }
 }
 
@@ -274,10 +280,7 @@ TEST(CliUnits, TheUnitScalesAnAssemblyAndChangesNothingElse)
         const nlohmann::json& part = r.converted.report.at("parts").at(0);
         expectSameLevels(part.at("levels"), mm.converted.report.at("parts").at(0).at("levels"), r, mm);
         EXPECT_EQ(r.converted.report.at("hlod"), mm.converted.report.at("hlod")) << r.unit;
-        EXPECT_EQ(r.bytes, mm.bytes) << r.unit;
-        const std::array<double, 3> e = extentOf(dir + "/" + r.unit + ".flt"), m = extentOf(dir + "/mm.flt");
-        for (int axis = 0; axis < 3; ++axis)
-            EXPECT_NEAR(e[axis] / r.metres, m[axis] / mm.metres, 1e-4 * m[axis] / mm.metres) << r.unit;
+        expectTheSameFileInProportion(dir, r, mm);
     }
 }
 
