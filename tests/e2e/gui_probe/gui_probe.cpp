@@ -21,11 +21,13 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMainWindow>
 #include <QMenu>
 #include <QPlainTextEdit>
+#include <QPointer>
 #include <QPushButton>
 #include <QScreen>
 #include <QStatusBar>
@@ -347,12 +349,30 @@ Step histogramFacts()
 
 QLineEdit* fileNameEdit(QFileDialog* dialog) { return dialog->findChild<QLineEdit*>("fileNameEdit"); }
 
-// Types the file name and presses the dialog's button, later: the dialog may ask more
-// (replace the file?) in a loop of its own, which must not run inside a step.
+// Presses the dialog's button once it would take `path`, until it closes. A dialog still
+// listing its folder selects the name it proposed when the listing arrives, after any name
+// set before; a press then takes that file (and asks to replace it). So the file is chosen
+// again until the dialog's own answer is `path`. Never while another modal window is up.
+void acceptWhenChosen(QPointer<QFileDialog> dialog, const QString& path, int triesLeft)
+{
+    if (!dialog || !dialog->isVisible() || triesLeft == 0)
+        return;
+    if (QApplication::activeModalWidget() == dialog.data()) {
+        const QStringList chosen = dialog->selectedFiles();
+        if (chosen.size() == 1 && QFileInfo(chosen.front()) == QFileInfo(path))
+            static_cast<QDialog*>(dialog.data())->accept();
+        else
+            dialog->selectFile(path);
+    }
+    QTimer::singleShot(300, [dialog, path, triesLeft]() { acceptWhenChosen(dialog, path, triesLeft - 1); });
+}
+
+// Chooses the file and presses the dialog's button, later: the dialog may ask more in a
+// loop of its own, which must not run inside a step.
 void chooseFile(QFileDialog* dialog, const QString& path)
 {
-    fileNameEdit(dialog)->setText(path);
-    QTimer::singleShot(0, dialog, [dialog]() { static_cast<QDialog*>(dialog)->accept(); });
+    dialog->selectFile(path);
+    QTimer::singleShot(300, dialog, [dialog, path]() { acceptWhenChosen(dialog, path, 100); });
 }
 
 // Export Mesh As: what the file dialog proposes (folder and name); it is then cancelled,
