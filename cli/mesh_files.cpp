@@ -131,9 +131,9 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
 }
 
 // A VRML model whose size is implausible for its unit is reported when loaded.
-void checkModelSize(double diagonalMetres, LoadedMesh& info)
+void checkModelSize(double diagonalInMeshUnits, LoadedMesh& info)
 {
-    const std::string warning = implausibleSizeWarning(diagonalMetres, info.unit);
+    const std::string warning = implausibleSizeWarning(diagonalInMeshUnits * info.lengthScale, info.unit);
     if (warning.empty())
         return;
     printFolded("warning", {warning});
@@ -252,7 +252,7 @@ LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& 
     case InputFormat::Vrml:
         info = loadVrml(path, m, settings, assembly);
         if (info.placements > 0) {
-            checkModelSize(placedDiagonal(assembly->assembly) * info.lengthScale, info);
+            checkModelSize(placedDiagonal(assembly->assembly), info);
             return info;
         }
         break;
@@ -269,7 +269,7 @@ LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& 
         throw InputError(path + ": no triangles");
     prepareForSimplifier(m);
     if (info.format == InputFormat::Vrml)
-        checkModelSize(liveDiagonal(m) * info.lengthScale, info);
+        checkModelSize(liveDiagonal(m), info);
     return info;
 }
 
