@@ -25,6 +25,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMainWindow>
+#include <QMessageBox>
 #include <QMenu>
 #include <QPlainTextEdit>
 #include <QPointer>
@@ -349,20 +350,50 @@ Step histogramFacts()
 
 QLineEdit* fileNameEdit(QFileDialog* dialog) { return dialog->findChild<QLineEdit*>("fileNameEdit"); }
 
+// Types `path` into the dialog's name field, as a user would: typing clears the list's
+// selection, so the dialog takes the typed name.
+void typeFileName(QFileDialog* dialog, const QString& path)
+{
+    if (QLineEdit* edit = fileNameEdit(dialog)) {
+        edit->setFocus();
+        edit->setText(path);
+    } else {
+        dialog->selectFile(path);
+    }
+}
+
+// The dialog's own question whether to replace some other file: answered No, so that no
+// file is replaced and the name can be typed again.
+bool refuseToReplaceAnotherFile(QFileDialog* dialog, const QString& path)
+{
+    for (auto* box : dialog->findChildren<QMessageBox*>()) {
+        if (!box->isVisible())
+            continue;
+        if (box->text().contains(QFileInfo(path).fileName())) {
+            box->button(QMessageBox::Yes)->click();
+        } else {
+            fact("export dialog asked: " + QString(box->text()).replace('\n', ' ') + " (answered No)");
+            box->button(QMessageBox::No)->click();
+        }
+        return true;
+    }
+    return false;
+}
+
 // Presses the dialog's button once it would take `path`, until it closes. A dialog still
-// listing its folder selects the name it proposed when the listing arrives, after any name
-// set before; a press then takes that file (and asks to replace it). So the file is chosen
-// again until the dialog's own answer is `path`. Never while another modal window is up.
+// listing its folder may select the file it proposed when the listing arrives, after the
+// name was typed; so the name is typed again until the dialog's own answer is `path`, and
+// a question to replace the proposed file is answered No.
 void acceptWhenChosen(QPointer<QFileDialog> dialog, const QString& path, int triesLeft)
 {
     if (!dialog || !dialog->isVisible() || triesLeft == 0)
         return;
-    if (QApplication::activeModalWidget() == dialog.data()) {
+    if (!refuseToReplaceAnotherFile(dialog, path) && QApplication::activeModalWidget() == dialog.data()) {
         const QStringList chosen = dialog->selectedFiles();
         if (chosen.size() == 1 && QFileInfo(chosen.front()) == QFileInfo(path))
             static_cast<QDialog*>(dialog.data())->accept();
         else
-            dialog->selectFile(path);
+            typeFileName(dialog, path);
     }
     QTimer::singleShot(300, [dialog, path, triesLeft]() { acceptWhenChosen(dialog, path, triesLeft - 1); });
 }
@@ -371,7 +402,7 @@ void acceptWhenChosen(QPointer<QFileDialog> dialog, const QString& path, int tri
 // loop of its own, which must not run inside a step.
 void chooseFile(QFileDialog* dialog, const QString& path)
 {
-    dialog->selectFile(path);
+    typeFileName(dialog, path);
     QTimer::singleShot(300, dialog, [dialog, path]() { acceptWhenChosen(dialog, path, 100); });
 }
 
