@@ -1,7 +1,8 @@
 // view_error FILE.flt...: the error on screen of an OpenFlight LOD model wherever the viewer
 // stands (design.md §8), as OpenSceneGraph reads and draws it. On three paths, inside (a
 // 4x4x2 grid of points in the bounding box), walk (50 points along the longest horizontal
-// side, 5 % of the diagonal outside it) and approach (1x to 1000x the diagonal, log-spaced),
+// side, 5 % of the diagonal outside it), approach (1x to 1000x the diagonal, log-spaced) and
+// far (the approach's points from 10x the diagonal on),
 // every LOD node picks its children by the distance from the eye to its centre in its own
 // frame, as OSG's cull does. A drawn level switched in at s shows its error as s / n pixels,
 // n being the distance from the eye to the nearest vertex of that level's own geometry (by
@@ -44,7 +45,7 @@ std::vector<Path> paths(const osg::BoundingBox& box)
     const osg::Vec3d lo(box.xMin(), box.yMin(), box.zMin()), hi(box.xMax(), box.yMax(), box.zMax());
     const osg::Vec3d size = hi - lo, centre = (lo + hi) * 0.5;
     const double diagonal = size.length();
-    Path inside{"inside", {}}, walk{"walk", {}}, approach{"approach", {}};
+    Path inside{"inside", {}}, walk{"walk", {}}, approach{"approach", {}}, far{"far", {}};
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j)
             for (int k = 0; k < 2; ++k)
@@ -58,9 +59,13 @@ std::vector<Path> paths(const osg::BoundingBox& box)
     }
     osg::Vec3d direction(-0.3, -1, 0.4);
     direction.normalize();
-    for (int i = 0; i < 30; ++i)
-        approach.eyes.push_back(centre + direction * (diagonal * std::pow(1000.0, i / 29.0)));
-    return {inside, walk, approach};
+    for (int i = 0; i < 30; ++i) {
+        const double distance = diagonal * std::pow(1000.0, i / 29.0);
+        approach.eyes.push_back(centre + direction * distance);
+        if (distance >= 10 * diagonal)
+            far.eyes.push_back(approach.eyes.back());
+    }
+    return {inside, walk, approach, far};
 }
 
 // Where the walk's rows go: one per eye point and measured file.
@@ -105,7 +110,7 @@ private:
 };
 
 struct PathTotals {
-    double worst = 0, meanWorst = 0, share = 0, drawables = 0, estimate = 0;
+    double worst = 0, meanWorst = 0, share = 0, drawables = 0, mostDrawables = 0, estimate = 0;
 };
 
 struct Model {
@@ -127,6 +132,7 @@ PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
         totals.meanWorst += f.worstApparentPx;
         totals.share += share;
         totals.drawables += double(f.drawables);
+        totals.mostDrawables = std::max(totals.mostDrawables, double(f.drawables));
         totals.estimate += estimate;
         if (walkCsv)
             walkCsv->row(model.file, i, eye, share, f, model.clusters ? &estimate : nullptr);
@@ -137,9 +143,9 @@ PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
 void printPath(const Model& model, const Path& path, const PathTotals& totals)
 {
     const double n = double(path.eyes.size());
-    std::printf("%s %s worst_px %.2f mean_worst_px %.2f triangles_share %.4f drawables_mean %.0f",
+    std::printf("%s %s worst_px %.2f mean_worst_px %.2f triangles_share %.4f drawables_mean %.0f drawables_max %.0f",
                 model.file.c_str(), path.name, totals.worst, totals.meanWorst / n, totals.share / n,
-                totals.drawables / n);
+                totals.drawables / n, totals.mostDrawables);
     if (model.clusters)
         std::printf(" estimate_share %.4f ratio_to_estimate %.4f", totals.estimate / n,
                     totals.estimate > 0 ? totals.share / totals.estimate : 0.0);
