@@ -36,6 +36,7 @@ struct ConvertArgs {
     std::string instances = "keep";
     std::string hlod = "auto";
     std::size_t clusterParts = ClusterTreeOptions{}.leafItems;
+    std::size_t clusterFanout = ClusterTreeOptions{}.fanout;
     double pixelError = 1.0, fov = 45.0, viewport = 1080.0, distanceRatio = 2.0, cullPixels = 0.0,
            proxyPixels = 8.0;
     bool fromOriginal = false;
@@ -110,6 +111,7 @@ nlohmann::json optionsJson(const ConvertArgs& a, const LoadedMesh& loaded)
             {"instances", a.instances},
             {"hlod", a.hlod},
             {"clusterParts", a.clusterParts},
+            {"clusterFanout", a.clusterFanout},
             {"pixelError", a.pixelError},
             {"fovY", a.fov},
             {"viewport", a.viewport},
@@ -257,6 +259,7 @@ HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, co
         return {};
     HierarchyOptions options;
     options.tree.leafItems = a.clusterParts;
+    options.tree.fanout = a.clusterFanout;
     options.view = viewOf(a);
     return buildHierarchy(c, options, importing, [&](CoreMesh& merged, LevelStore& store, double nearest) {
         return buildLevels(a, lengthScale, merged, store, nearest);
@@ -272,7 +275,7 @@ nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
             {"proxyTriangles", h.proxyTriangles},
             {"mergedTriangles", h.inputTriangles},
             {"clusterParts", a.clusterParts},
-            {"fanout", ClusterTreeOptions{}.fanout}};
+            {"fanout", a.clusterFanout}};
 }
 
 void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
@@ -285,7 +288,7 @@ void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
     std::fprintf(stderr,
                  "cadlod: hlod: %zu clusters of up to %zu placements (%zu per node), %zu with proxies: %zu proxy "
                  "levels, %zu triangles, merged from %zu\n",
-                 h.clusters, a.clusterParts, ClusterTreeOptions{}.fanout, h.proxied, h.proxyLevels, h.proxyTriangles,
+                 h.clusters, a.clusterParts, a.clusterFanout, h.proxied, h.proxyLevels, h.proxyTriangles,
                  h.inputTriangles);
 }
 
@@ -485,6 +488,9 @@ void addConvertCommand(CLI::App& app)
         ->capture_default_str();
     cmd->add_option("--cluster-parts", args->clusterParts, "hlod: at most this many placements in a leaf cluster")
         ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--cluster-fanout", args->clusterFanout, "hlod: at most this many nodes below a cluster")
+        ->check(CLI::Range(2, 64))
         ->capture_default_str();
     cmd->add_flag("--from-original", args->fromOriginal, "List: simplify every level from the original");
     cmd->add_option("--samples", args->samples, "Hausdorff samples per side (0: automatic)");

@@ -7,7 +7,8 @@
 // frame, as OSG's cull does. A drawn level switched in at s shows its error as s / n pixels,
 // n being the distance from the eye to the nearest vertex of that level's own geometry (by
 // the chain's contract the error is 1 px at s). Prints per path the worst and mean worst
-// error, the triangles drawn as a share of level 0 and the drawables; with --estimate REF, also
+// error, the triangles drawn as a share of level 0 and the drawables (mean, most, and of them
+// the cluster proxies); with --estimate REF, also
 // the share the per-cluster estimate of REF's chain draws (cluster_estimate.h) and the ratio of
 // the two; with --walk-csv, every walk point's figures; with --box, the paths are laid in
 // that box rather than the model's own.
@@ -110,7 +111,7 @@ private:
 };
 
 struct PathTotals {
-    double worst = 0, meanWorst = 0, share = 0, drawables = 0, mostDrawables = 0, estimate = 0;
+    double worst = 0, meanWorst = 0, share = 0, drawables = 0, mostDrawables = 0, proxyDrawables = 0, estimate = 0;
 };
 
 struct Model {
@@ -133,6 +134,7 @@ PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
         totals.share += share;
         totals.drawables += double(f.drawables);
         totals.mostDrawables = std::max(totals.mostDrawables, double(f.drawables));
+        totals.proxyDrawables += double(f.proxyDrawables);
         totals.estimate += estimate;
         if (walkCsv)
             walkCsv->row(model.file, i, eye, share, f, model.clusters ? &estimate : nullptr);
@@ -143,9 +145,10 @@ PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
 void printPath(const Model& model, const Path& path, const PathTotals& totals)
 {
     const double n = double(path.eyes.size());
-    std::printf("%s %s worst_px %.2f mean_worst_px %.2f triangles_share %.4f drawables_mean %.0f drawables_max %.0f",
+    std::printf("%s %s worst_px %.2f mean_worst_px %.2f triangles_share %.4f drawables_mean %.0f drawables_max %.0f "
+                "proxies_mean %.0f",
                 model.file.c_str(), path.name, totals.worst, totals.meanWorst / n, totals.share / n,
-                totals.drawables / n, totals.mostDrawables);
+                totals.drawables / n, totals.mostDrawables, totals.proxyDrawables / n);
     if (model.clusters)
         std::printf(" estimate_share %.4f ratio_to_estimate %.4f", totals.estimate / n,
                     totals.estimate > 0 ? totals.share / totals.estimate : 0.0);

@@ -155,6 +155,7 @@ private:
         g.accept(count);
         view.triangles += count.triangles;
         ++view.drawables;
+        view.proxyDrawables += proxyDepth_ > 0 ? 1 : 0;
         const double s = switchedIn_.back();
         if (s <= 0)
             return;
@@ -227,12 +228,28 @@ struct OsgViewProbe::Impl {
     std::string model;
 };
 
+namespace {
+// The model's name as cadlod writes it: the header's ID is its first 7 characters, and the
+// group below the header bears it whole.
+std::string modelNameOf(const osg::Node& root)
+{
+    const std::string header = root.getName();
+    const osg::Group* group = root.asGroup();
+    for (unsigned i = 0; group && i < group->getNumChildren(); ++i) {
+        const std::string& name = group->getChild(i)->getName();
+        if (!header.empty() && name.compare(0, header.size(), header) == 0)
+            return name;
+    }
+    return header;
+}
+}  // namespace
+
 OsgViewProbe::OsgViewProbe(const std::string& path, const std::string& modelName) : impl_(new Impl)
 {
     osg::ref_ptr<osgDB::Options> options = new osgDB::Options;
     options->setObjectCacheHint(osgDB::Options::CACHE_NONE);
     impl_->root = osgDB::readRefNodeFile(path, options.get());
-    impl_->model = modelName;
+    impl_->model = modelName.empty() && impl_->root ? modelNameOf(*impl_->root) : modelName;
 }
 
 OsgViewProbe::~OsgViewProbe() { delete impl_; }

@@ -21,6 +21,7 @@ struct OsgView {
     double worstApparentPx = 0;    // max s / n over the drawables drawn by a level with s > 0
     std::size_t triangles = 0;
     std::size_t drawables = 0;
+    std::size_t proxyDrawables = 0;  // of the drawables, those of cluster proxies
     std::map<std::string, std::size_t> drawnPlacements;  // drawn by itself or by a proxy
 };
 
