@@ -143,6 +143,33 @@ namespace cadlod::test {
 
 // A file that shares nothing but holds many parts gets the same hierarchy: each part placed
 // once, in clusters with proxies, the bound held from inside; --hlod off keeps one LOD node.
+TEST(CliHierarchicalLod, TheClusterFanoutShapesTheTree)
+{
+    const std::string dir = freshDirectory("hlod_fanout");
+    const std::string input = writeGrid(dir);
+    EXPECT_EQ(runCadlod({"convert", input, "-o", dir + "/bad.flt", "--cluster-fanout", "1"}).exitCode, 2);
+    EXPECT_FALSE(fileExists(dir + "/bad.flt"));
+
+    const CliRun run = runCadlod({"convert", input, "-o", dir + "/grid.flt", "--cluster-parts", "16",
+                                  "--cluster-fanout", "2", "--report", dir + "/grid.json"});
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    EXPECT_NE(run.stderrText.find("(2 per node)"), std::string::npos) << run.stderrText;
+    const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/grid.json"));
+    EXPECT_EQ(report.at("hlod").at("fanout").get<int>(), 2);
+    // 128 placements halved down to leaves of 16: 1 + 2 + 4 + 8 clusters.
+    EXPECT_EQ(report.at("hlod").at("clusters").get<int>(), 15);
+
+    const OsgViewProbe osg(dir + "/grid.flt", "grid");
+    ASSERT_TRUE(osg.loaded());
+    for (const Point3& eye : eyePoints(osg.bounds())) {
+        const OsgView view = osg.drawFrom(eye);
+        EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9));
+        ASSERT_EQ(view.drawnPlacements.size(), std::size_t(kColumns * kRows * kLayers));
+        for (const auto& [name, times] : view.drawnPlacements)
+            EXPECT_EQ(times, 1u) << name;
+    }
+}
+
 TEST(CliHierarchicalLod, AFileThatSharesNothingIsClusteredByItsParts)
 {
     const std::string dir = freshDirectory("hlod_unshared");
