@@ -93,6 +93,17 @@ std::vector<Point3> eyePoints(const std::array<Point3, 2>& box)
     return eyes;
 }
 
+// Seen from `eye`, every placement of the grid is drawn exactly once (by itself or by a
+// proxy), and no drawn level shows more than the bound.
+void expectEveryPlacementOnceWithinTheBound(const OsgView& view, const Point3& eye)
+{
+    const std::string at = "eye " + std::to_string(eye[0]) + " " + std::to_string(eye[1]) + " " + std::to_string(eye[2]);
+    EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9)) << at;
+    ASSERT_EQ(view.drawnPlacements.size(), std::size_t(kColumns * kRows * kLayers)) << at;
+    for (const auto& [name, times] : view.drawnPlacements)
+        EXPECT_EQ(times, 1u) << name << " from " << at;
+}
+
 }  // namespace
 
 TEST(CliHierarchicalLod, HoldsTheErrorBoundAndDrawsEveryPlacementOnceWhereverTheEyeIs)
@@ -122,12 +133,7 @@ TEST(CliHierarchicalLod, HoldsTheErrorBoundAndDrawsEveryPlacementOnceWhereverThe
     const std::vector<Point3> eyes = eyePoints(osg.bounds());
     for (const Point3& eye : eyes) {
         const OsgView view = osg.drawFrom(eye);
-        const std::string at = "eye " + std::to_string(eye[0]) + " " + std::to_string(eye[1]) + " " +
-                               std::to_string(eye[2]);
-        EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9)) << at;
-        ASSERT_EQ(view.drawnPlacements.size(), std::size_t(kColumns * kRows * kLayers)) << at;
-        for (const auto& [name, times] : view.drawnPlacements)
-            EXPECT_EQ(times, 1u) << name << " from " << at;
+        expectEveryPlacementOnceWithinTheBound(view, eye);
         if (&eye == &eyes.back())  // 1000x the diagonal off
             farDrawables = view.drawables;
         nearDrawables = std::max(nearDrawables, view.drawables);
@@ -137,12 +143,6 @@ TEST(CliHierarchicalLod, HoldsTheErrorBoundAndDrawsEveryPlacementOnceWhereverThe
     EXPECT_LE(farDrawables, 4u);
 }
 
-}  // namespace cadlod::test
-
-namespace cadlod::test {
-
-// A file that shares nothing but holds many parts gets the same hierarchy: each part placed
-// once, in clusters with proxies, the bound held from inside; --hlod off keeps one LOD node.
 TEST(CliHierarchicalLod, TheClusterFanoutShapesTheTree)
 {
     const std::string dir = freshDirectory("hlod_fanout");
@@ -161,15 +161,16 @@ TEST(CliHierarchicalLod, TheClusterFanoutShapesTheTree)
 
     const OsgViewProbe osg(dir + "/grid.flt", "grid");
     ASSERT_TRUE(osg.loaded());
-    for (const Point3& eye : eyePoints(osg.bounds())) {
-        const OsgView view = osg.drawFrom(eye);
-        EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9));
-        ASSERT_EQ(view.drawnPlacements.size(), std::size_t(kColumns * kRows * kLayers));
-        for (const auto& [name, times] : view.drawnPlacements)
-            EXPECT_EQ(times, 1u) << name;
-    }
+    for (const Point3& eye : eyePoints(osg.bounds()))
+        expectEveryPlacementOnceWithinTheBound(osg.drawFrom(eye), eye);
 }
 
+}  // namespace cadlod::test
+
+namespace cadlod::test {
+
+// A file that shares nothing but holds many parts gets the same hierarchy: each part placed
+// once, in clusters with proxies, the bound held from inside; --hlod off keeps one LOD node.
 TEST(CliHierarchicalLod, AFileThatSharesNothingIsClusteredByItsParts)
 {
     const std::string dir = freshDirectory("hlod_unshared");

@@ -362,9 +362,9 @@ void typeFileName(QFileDialog* dialog, const QString& path)
     }
 }
 
-// The dialog's own question whether to replace some other file: answered No, so that no
-// file is replaced and the name can be typed again.
-bool refuseToReplaceAnotherFile(QFileDialog* dialog, const QString& path)
+// The dialog's own question whether to replace a file: Yes for `path` itself; No for any
+// other file, so that none is replaced and the name can be typed again. False: none asked.
+bool answerReplaceQuestion(QFileDialog* dialog, const QString& path)
 {
     for (auto* box : dialog->findChildren<QMessageBox*>()) {
         if (!box->isVisible())
@@ -388,7 +388,7 @@ void acceptWhenChosen(QPointer<QFileDialog> dialog, const QString& path, int tri
 {
     if (!dialog || !dialog->isVisible() || triesLeft == 0)
         return;
-    if (!refuseToReplaceAnotherFile(dialog, path) && QApplication::activeModalWidget() == dialog.data()) {
+    if (!answerReplaceQuestion(dialog, path) && QApplication::activeModalWidget() == dialog.data()) {
         const QStringList chosen = dialog->selectedFiles();
         if (chosen.size() == 1 && QFileInfo(chosen.front()) == QFileInfo(path))
             static_cast<QDialog*>(dialog.data())->accept();
