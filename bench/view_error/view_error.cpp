@@ -1,11 +1,11 @@
 // view_error FILE.flt...: the error on screen of an OpenFlight LOD model wherever the viewer
-// stands (design.md §8), as OpenSceneGraph reads and draws it. On three paths, inside (a
+// stands (design.md §8), as OpenSceneGraph reads and draws it. On four paths, inside (a
 // 4x4x2 grid of points in the bounding box), walk (50 points along the longest horizontal
 // side, 5 % of the diagonal outside it), approach (1x to 1000x the diagonal, log-spaced) and
-// far (the approach's points from 10x the diagonal on), every LOD node picks its children by the distance from the eye to its centre in its own
-// frame, as OSG's cull does. A drawn level switched in at s shows its error as s / n pixels,
-// n being the distance from the eye to the nearest vertex of that level's own geometry (by
-// the chain's contract the error is 1 px at s). Prints per path the worst and mean worst
+// far (the approach's points from 10x the diagonal on), every LOD node picks its children by
+// the distance from the eye to its centre in its own frame, as OSG's cull does. A drawn level
+// switched in at s shows its error as s / n pixels, n being the distance from the eye to the
+// nearest vertex of that level's own geometry (by the chain's contract the error is 1 px at s). Prints per path the worst and mean worst
 // error, the triangles drawn as a share of level 0 and the drawables (mean, most, and of them
 // the cluster proxies); with --estimate REF, also the share the per-cluster estimate of REF's
 // chain draws (cluster_estimate.h) and the ratio of the two; with --walk-csv, every walk
