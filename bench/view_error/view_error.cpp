@@ -5,11 +5,12 @@
 // far (the approach's points from 10x the diagonal on), every LOD node picks its children by
 // the distance from the eye to its centre in its own frame, as OSG's cull does. A drawn level
 // switched in at s shows its error as s / n pixels, n being the distance from the eye to the
-// nearest vertex of that level's own geometry (by the chain's contract the error is 1 px at s). Prints per path the worst and mean worst
-// error, the triangles drawn as a share of level 0 and the drawables (mean, most, and of them
-// the cluster proxies); with --estimate REF, also the share the per-cluster estimate of REF's
-// chain draws (cluster_estimate.h) and the ratio of the two; with --walk-csv, every walk
-// point's figures; with --box, the paths are laid in that box rather than the model's own.
+// nearest vertex of that level's own geometry (by the chain's contract the error is 1 px at
+// s). Prints per path the worst and mean worst error, the triangles drawn as a share of level
+// 0 and the drawables (mean, most, and of them the cluster proxies); with --estimate REF, also
+// the share the per-cluster estimate of REF's chain draws (cluster_estimate.h) and the ratio
+// of the two; with --walk-csv, every walk point's figures; with --box, the paths are laid in
+// that box rather than the model's own.
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
 #include <osg/Geometry>
