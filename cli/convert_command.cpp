@@ -4,15 +4,15 @@
 #include "cli_options.h"
 #include "input_losses.h"
 #include "commands.h"
-#include "assembly_convert.h"
-#include "hierarchical_lod.h"
-#include "lod_output.h"
 #include "mesh_files.h"
 #include "note_lines.h"
 #include "output_file.h"
 #include "progress_bar.h"
 #include "report_json.h"
 
+#include "assembly/assembly_convert.h"
+#include "assembly/hierarchical_lod.h"
+#include "assembly/level_store.h"
 #include "lod/lod_builder.h"
 #include "lod/lod_chain.h"
 #include "lod/scale_lengths.h"
@@ -70,8 +70,15 @@ constexpr int kReadingEnd = 10, kWritingStart = 95;
 // An assembly's parts fill this much of the LOD chain's share when proxies follow them.
 constexpr int kPartsShareBeforeProxies = 70;
 
-// The fewest Hausdorff samples per side a cluster proxy is measured with.
-constexpr std::size_t kProxySamples = 20000;
+// The parts and proxies of an assembly on the one progress bar.
+ProgressSpans barSpans()
+{
+    ProgressSpans spans;
+    spans.begin = [](int from, int to, const std::string& label) { progress::beginSpan(from, to, label); };
+    spans.end = [] { progress::endSpan(); };
+    spans.step = progress::callback;
+    return spans;
+}
 
 // `lengthScale` turns the mesh's lengths into metres, for the progress to name distances in.
 LodSetResult buildLevels(const ConvertArgs& a, double lengthScale, CoreMesh& original, LevelStore& store,
@@ -89,9 +96,7 @@ LodSetResult buildLevels(const ConvertArgs& a, double lengthScale, CoreMesh& ori
         o.runTogether = runOnWorkers;
         o.distanceUnit = "m";
         o.distanceScale = lengthScale;
-        o.nearestDistance = nearestDistance;
-        if (nearestDistance > 0 && a.samples == 0)  // a proxy: its parts' levels are measured already
-            o.hausdorffSamples = std::clamp<std::size_t>(std::size_t(original.fn), kProxySamples, 100000);
+        o = proxyChainOptions(o, original.fn, nearestDistance);
         CoreMesh scratch;
         return buildLodChain<CoreMesh>(original, scratch, o, newLevel, progress::callback);
     }
@@ -261,9 +266,10 @@ HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, co
     options.tree.leafItems = a.clusterParts;
     options.tree.fanout = a.clusterFanout;
     options.view = viewOf(a);
-    return buildHierarchy(c, options, importing, [&](CoreMesh& merged, LevelStore& store, double nearest) {
+    const auto chain = [&](CoreMesh& merged, LevelStore& store, double nearest) {
         return buildLevels(a, lengthScale, merged, store, nearest);
-    });
+    };
+    return buildHierarchy(c, options, weldingOf(importing), chain, barSpans());
 }
 
 nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
@@ -315,11 +321,11 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     progress::phase(kReadingEnd, kWritingStart, "LOD chain");
     const int partsShare = hierarchical(a) && loaded.placements > 1 ? kPartsShareBeforeProxies : 100;
     progress::beginSpan(0, partsShare, "");
-    AssemblyConversion c = convertAssembly(scene, baseName(a.output), inParts,
-                                           [&](CoreMesh& original, LevelStore& store) {
-                                               return buildLevels(a, lengthScale, original, store);
-                                           },
-                                           hierarchical(a));
+    const auto chain = [&](CoreMesh& original, LevelStore& store) {
+        return buildLevels(a, lengthScale, original, store);
+    };
+    AssemblyConversion c =
+        convertAssembly(scene, baseName(a.output), weldingOf(inParts), chain, hierarchical(a), barSpans());
     progress::endSpan();
     progress::beginSpan(partsShare, 100, "");
     const HierarchyStats hierarchy = clusterPlacements(a, c, inParts, lengthScale);

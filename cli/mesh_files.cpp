@@ -64,23 +64,11 @@ std::string lower(std::string s)
     return s;
 }
 
-void prepareForSimplifier(CoreMesh& m)
-{
-    vcg::tri::Allocator<CoreMesh>::CompactEveryVector(m);
-    vcg::tri::UpdateNormal<CoreMesh>::PerFaceNormalized(m);
-    vcg::tri::UpdateBounding<CoreMesh>::Box(m);
-    vcg::tri::UpdateTopology<CoreMesh>::VertexFace(m);
-}
-
 void sceneToCoreMesh(vrml::Scene& scene, CoreMesh& m, const ImportSettings& settings, LoadedMesh& info)
 {
-    mesh_io::SceneToMeshOptions toMesh;
-    toMesh.mergeVertices = settings.mergeVertices;
-    toMesh.mergeTolerance = settings.mergeTolerance;
-    mesh_io::SceneToMeshStats stats;
-    mesh_io::sceneToMesh(scene, m, toMesh, progress::callback, &stats);
+    const WeldingStats stats = weldScene(scene, m, weldingOf(settings), progress::callback);
     info.mergedVertices = stats.mergedVertices;
-    info.degenerateFaces = stats.facesRepeatingVertex;
+    info.degenerateFaces = stats.degenerateFaces;
 }
 
 vrml::ImportOptions vrmlOptions(const ImportSettings& settings, bool keepInstances)
@@ -273,17 +261,9 @@ LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& 
     return info;
 }
 
-void partToMesh(std::vector<vrml::Part>&& parts, const std::string& name, CoreMesh& m, const ImportSettings& settings,
-                LoadedMesh& info)
+PartWelding weldingOf(const ImportSettings& settings)
 {
-    vrml::Scene scene;
-    scene.parts = std::move(parts);
-    info.format = InputFormat::Vrml;
-    info.parts = scene.parts.size();
-    sceneToCoreMesh(scene, m, settings, info);
-    if (m.fn == 0)
-        throw InputError(name + ": no triangles in the part");
-    prepareForSimplifier(m);
+    return {settings.mergeVertices, settings.mergeTolerance};
 }
 
 void saveMesh(const std::string& path, CoreMesh& m, const SaveSettings& settings)

@@ -2,6 +2,7 @@
 // or gzip; OpenFlight, finest level; OBJ with our obj_reader.h; PLY/STL through vcglib)
 // and writing a mesh as PLY/OBJ/STL (vcglib) or a one-level OpenFlight file.
 #pragma once
+#include "assembly/part_mesh.h"
 #include "mesh/core_mesh.h"
 #include "openflight/flt_writer.h"
 #include "openflight/lod_model.h"
@@ -71,10 +72,8 @@ ImportSettings inMeshUnits(ImportSettings settings, const LoadedMesh& loaded);
 LoadedMesh loadMesh(const std::string& path, CoreMesh& m, const ImportSettings& settings,
                     vrml::Scene* assembly = nullptr);
 
-// A distinct part of an assembly as the simplifier takes it: welded as loadMesh welds.
-// Throws InputError when nothing is left of it.
-void partToMesh(std::vector<vrml::Part>&& parts, const std::string& name, CoreMesh& m, const ImportSettings& settings,
-                LoadedMesh& info);
+// How loadMesh welds, for the parts of an assembly (assembly/part_mesh.h).
+PartWelding weldingOf(const ImportSettings& settings);
 
 // Reads an OpenFlight file whole; throws InputError.
 flt::LodModel readFlt(const std::string& path);

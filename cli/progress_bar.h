@@ -11,9 +11,6 @@ namespace cadlod::cli::progress {
 
 void enable(bool on);
 
-// The share (%) of a part's progress that welding its mesh takes, beside its LOD chain.
-constexpr int kWeldingShare = 5;
-
 // Starts the phase `name`, which fills [from, to] % of the whole bar; reports (and spans)
 // after it run 0..100 within that share. Ends the spans of the phase before it.
 void phase(int from, int to, const std::string& name);

@@ -6,8 +6,8 @@
 #include "cli_runner.h"
 #include "osg_view_probe.h"
 
-#include "hierarchical_lod.h"
-#include "lod_output.h"
+#include "assembly/hierarchical_lod.h"
+#include "assembly/level_store.h"
 
 #include "convert/lod_model_to_mesh.h"
 #include "lod/lod_chain.h"
@@ -246,7 +246,7 @@ void readyForMeasure(CoreMesh& m)
     vcg::tri::UpdateBounding<CoreMesh>::Box(m);
 }
 
-LodSetResult chainFrom(CoreMesh& m, cli::LevelStore& store, double nearest)
+LodSetResult chainFrom(CoreMesh& m, LevelStore& store, double nearest)
 {
     LodChainOptions o;
     o.nearestDistance = nearest;
@@ -266,12 +266,12 @@ TEST(CliHierarchicalLod, EveryProxyIsWithinItsErrorOfThePartsItReplaces)
     keep.instances = vrml::Instances::Keep;
     vrml::ImportResult imported = vrml::importVrmlFile(writeGrid(dir), keep);
     ASSERT_TRUE(imported.ok()) << imported.error;
-    const cli::ImportSettings settings;
-    cli::AssemblyConversion c = cli::convertAssembly(
-        imported.scene, "grid", settings, [](CoreMesh& m, cli::LevelStore& store) { return chainFrom(m, store, 0); }, true);
-    cli::HierarchyOptions options;
+    const PartWelding settings;
+    AssemblyConversion c = convertAssembly(
+        imported.scene, "grid", settings, [](CoreMesh& m, LevelStore& store) { return chainFrom(m, store, 0); }, true);
+    HierarchyOptions options;
     options.tree.leafItems = 16;
-    const cli::HierarchyStats stats = cli::buildHierarchy(c, options, settings, chainFrom);
+    const HierarchyStats stats = buildHierarchy(c, options, settings, chainFrom);
     ASSERT_GE(stats.proxyLevels, 2u);
 
     const double pixelAtOne = 1.0 / projectedErrorDistance(1.0, options.view);

@@ -1,7 +1,7 @@
 // A long part in chunks (part_chunks.h): every level's triangles are in exactly one chunk;
 // each chunk switches where its own level holds at the chunk's nearest point, so the
 // chunks switch far nearer than the whole part's one LOD node may.
-#include "part_chunks.h"
+#include "assembly/part_chunks.h"
 
 #include "lod/nearest_point.h"
 
@@ -38,7 +38,7 @@ flt::Level strip(int cells, double switchOut, double switchIn)
 TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
 {
     const std::vector<flt::Level> levels{strip(64, 0, 1.0), strip(16, 1.0, 4.0), strip(4, 4.0, 1e30)};
-    const auto chunks = cli::chunkLevels(levels, 0.0);
+    const auto chunks = chunkLevels(levels, 0.0);
     ASSERT_EQ(chunks.size(), 4u);  // four along x; the strip is flat in y and z
     for (std::size_t k = 0; k < levels.size(); ++k) {
         std::size_t triangles = 0;
@@ -55,7 +55,7 @@ TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
         EXPECT_DOUBLE_EQ(chunk[0].switchIn, chunk[1].switchOut);
         EXPECT_LT(chunk[1].switchOut, switchAtNearestPoint(1.0, wholeReach) / 2);
     }
-    EXPECT_TRUE(cli::chunkLevels(levels, 1.0).empty());  // smaller than the smallest part cut
+    EXPECT_TRUE(chunkLevels(levels, 1.0).empty());  // smaller than the smallest part cut
 }
 
 }  // namespace cadlod::test

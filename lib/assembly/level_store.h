@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace cadlod::cli {
+namespace cadlod {
 
 // The level meshes of a chain live here until the model is written.
 struct LevelStore {
@@ -22,8 +22,8 @@ struct LevelStore {
     }
 };
 
-// Throws InputError when the set cannot be assembled.
+// Throws std::runtime_error when the set cannot be assembled.
 flt::LodModel lodMeshesToModel(const std::vector<CoreMesh*>& meshes, int setId, const std::string& name,
                                std::size_t& skippedFaces);
 
-}  // namespace cadlod::cli
+}  // namespace cadlod

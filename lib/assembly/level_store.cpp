@@ -1,12 +1,13 @@
-#include "lod_output.h"
+#include "assembly/level_store.h"
 
-#include "cli_errors.h"
-#include "openflight/lod_assembly.h"
 #include "convert/mesh_to_lod_model.h"
+#include "openflight/lod_assembly.h"
+
+#include <stdexcept>
 
 #include <tbb/parallel_for.h>
 
-namespace cadlod::cli {
+namespace cadlod {
 namespace {
 
 flt::LodSetMember memberOf(CoreMesh& m, const std::string& name, std::size_t& skipped)
@@ -47,8 +48,8 @@ flt::LodModel lodMeshesToModel(const std::vector<CoreMesh*>& meshes, int setId, 
     model.name = name;
     std::string error;
     if (!flt::assembleLodSet(std::move(members), setId, model, error))
-        throw InputError("cannot assemble the LOD set: " + error);
+        throw std::runtime_error("cannot assemble the LOD set: " + error);
     return model;
 }
 
-}  // namespace cadlod::cli
+}  // namespace cadlod

@@ -1,7 +1,5 @@
-#include "hierarchical_lod.h"
+#include "assembly/hierarchical_lod.h"
 
-#include "cli_errors.h"
-#include "progress_bar.h"
 
 #include "lod/lod_chain.h"
 #include "lod/nearest_point.h"
@@ -10,8 +8,9 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
 
-namespace cadlod::cli {
+namespace cadlod {
 namespace {
 
 using flt::Vec3d;
@@ -190,9 +189,9 @@ const flt::Mat4d kIdentity{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 
 
 class HierarchyBuilder {
 public:
-    HierarchyBuilder(AssemblyConversion& c, const HierarchyOptions& options, const ImportSettings& settings,
-                     const BuildProxyChain& buildProxyChain)
-        : c_(c), options_(options), settings_(settings), buildProxyChain_(buildProxyChain)
+    HierarchyBuilder(AssemblyConversion& c, const HierarchyOptions& options, const PartWelding& welding,
+                     const BuildProxyChain& buildProxyChain, const ProgressSpans& progress)
+        : c_(c), options_(options), welding_(welding), buildProxyChain_(buildProxyChain), progress_(progress)
     {
     }
 
@@ -248,13 +247,13 @@ private:
         double inputError = 0;
         gather(n, allowance, merged, inputError);
         stats_.inputTriangles += merged.triangles();
-        progress::beginSpan(int(100 * (nodes_.size() - 1 - n) / nodes_.size()),
+        progress_.begin(int(100 * (nodes_.size() - 1 - n) / nodes_.size()),
                             int(100 * (nodes_.size() - n) / nodes_.size()),
                             "proxy " + std::to_string(nodes_.size() - n) + "/" + std::to_string(nodes_.size()));
         // The chain's first level then lands about where the proxy can first be drawn.
         const double first = std::max(0.0, nearest - work.radius - projectedErrorDistance(inputError, options_.view));
         simplifyTogether(merged, inputError, first, work);
-        progress::endSpan();
+        progress_.end();
         select(n);
     }
 
@@ -346,19 +345,18 @@ private:
         if (merged.triangles() == 0)
             return;
         CoreMesh mesh;
-        LoadedMesh info;
         {
-            progress::Span welding(0, progress::kWeldingShare);
-            partToMesh(merged.take(), "cluster", mesh, settings_, info);
+            ProgressSpan welding(progress_, 0, kWeldingShare);
+            partToMesh(merged.take(), "cluster", mesh, welding_, progress_.step);
         }
         LevelStore store;
         LodSetResult result;
         {
-            progress::Span chain(progress::kWeldingShare, 100);
+            ProgressSpan chain(progress_, kWeldingShare, 100);
             result = buildProxyChain_(mesh, store, firstDistance);
         }
         if (!result.ok())
-            throw InputError("a cluster proxy: " + result.error);
+            throw std::runtime_error("a cluster proxy: " + result.error);
         std::vector<CoreMesh*> meshes{&mesh};
         for (auto& m : store.meshes)
             meshes.push_back(m.get());
@@ -431,8 +429,9 @@ private:
 
     AssemblyConversion& c_;
     const HierarchyOptions& options_;
-    const ImportSettings& settings_;
+    const PartWelding welding_;
     const BuildProxyChain& buildProxyChain_;
+    const ProgressSpans& progress_;
     std::vector<ClusterNode> nodes_;
     std::vector<ClusterWork> work_;
     HierarchyStats stats_;
@@ -440,10 +439,18 @@ private:
 
 }  // namespace
 
-HierarchyStats buildHierarchy(AssemblyConversion& c, const HierarchyOptions& options, const ImportSettings& settings,
-                              const BuildProxyChain& buildProxyChain)
+LodChainOptions proxyChainOptions(LodChainOptions options, int triangles, double nearestDistance)
 {
-    return HierarchyBuilder(c, options, settings, buildProxyChain).build();
+    options.nearestDistance = nearestDistance;
+    if (nearestDistance > 0 && options.hausdorffSamples == 0)
+        options.hausdorffSamples = std::clamp<std::size_t>(std::size_t(triangles), kProxySamples, 100000);
+    return options;
 }
 
-}  // namespace cadlod::cli
+HierarchyStats buildHierarchy(AssemblyConversion& c, const HierarchyOptions& options, const PartWelding& welding,
+                              const BuildProxyChain& buildProxyChain, const ProgressSpans& progress)
+{
+    return HierarchyBuilder(c, options, welding, buildProxyChain, progress).build();
+}
+
+}  // namespace cadlod

@@ -1,4 +1,4 @@
-#include "part_chunks.h"
+#include "assembly/part_chunks.h"
 
 #include "lod/cluster_tree.h"  // Box3
 #include "lod/nearest_point.h"
@@ -8,7 +8,7 @@
 #include <limits>
 #include <map>
 
-namespace cadlod::cli {
+namespace cadlod {
 namespace {
 
 Box3 boxOf(const flt::Level& level)
@@ -145,4 +145,4 @@ std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& 
     return chunks;
 }
 
-}  // namespace cadlod::cli
+}  // namespace cadlod

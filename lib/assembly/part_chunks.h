@@ -13,7 +13,7 @@
 
 #include <vector>
 
-namespace cadlod::cli {
+namespace cadlod {
 
 // Chunks of at most this share of the part's box, along each axis.
 inline constexpr int kChunksPerAxis = 4;
@@ -26,4 +26,4 @@ inline constexpr double kChunkedPartShare = 1.0 / 16.0;
 // let any level switch nearer, or the part's radius is below `smallestRadius`.
 std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius);
 
-}  // namespace cadlod::cli
+}  // namespace cadlod

@@ -4,10 +4,11 @@
 // distances pushed out by its radius (so they hold at its nearest point), then one placement
 // per use, named by its path.
 #pragma once
-#include "lod_output.h"
-#include "mesh_files.h"
+#include "assembly/level_store.h"
+#include "assembly/part_mesh.h"
+#include "assembly/progress_spans.h"
 
-#include "lod/lod_builder.h"
+#include "lod/lod_builder.h"  // LodSetResult
 #include "openflight/instanced_writer.h"
 #include "vrml/scene.h"
 
@@ -15,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace cadlod::cli {
+namespace cadlod {
 
 // The chain of one part: `original` is ready for the simplifier, the levels go to `store`.
 using BuildChain = std::function<LodSetResult(CoreMesh& original, LevelStore& store)>;
@@ -36,9 +37,10 @@ struct AssemblyConversion {
 };
 
 // `modelName` names the model (its header and root group). `chunkLargeParts`: a part large
-// in the assembly is written in chunks (part_chunks.h). Throws InputError when a part
-// cannot be converted (its name in the message).
-AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelName, const ImportSettings& settings,
-                                   const BuildChain& buildChain, bool chunkLargeParts = false);
+// in the assembly is written in chunks (part_chunks.h). Each part is a span of `progress`.
+// Throws std::runtime_error when a part cannot be converted (its name in the message).
+AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelName, const PartWelding& welding,
+                                   const BuildChain& buildChain, bool chunkLargeParts = false,
+                                   const ProgressSpans& progress = {});
 
-}  // namespace cadlod::cli
+}  // namespace cadlod

@@ -1,8 +1,6 @@
-#include "assembly_convert.h"
+#include "assembly/assembly_convert.h"
 
-#include "cli_errors.h"
-#include "part_chunks.h"
-#include "progress_bar.h"
+#include "assembly/part_chunks.h"
 
 #include "lod/cluster_tree.h"  // Box3
 #include "lod/lod_chain.h"
@@ -12,8 +10,9 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
 
-namespace cadlod::cli {
+namespace cadlod {
 namespace {
 
 flt::Mat4d toFlt(const vrml::Mat4& m)
@@ -106,27 +105,28 @@ void holdAtNearestPoint(std::vector<flt::Level>& levels, LodSetResult& result)
     }
 }
 
-PartChain convertPart(vrml::Geometry& geometry, const ImportSettings& settings, const BuildChain& buildChain,
-                      double smallestChunkedRadius, flt::PartDefinition& definition, std::size_t& skippedFaces)
+PartChain convertPart(vrml::Geometry& geometry, const PartWelding& welding, const BuildChain& buildChain,
+                      double smallestChunkedRadius, flt::PartDefinition& definition, std::size_t& skippedFaces,
+                      const ProgressSpans& progress)
 {
     PartChain chain;
     chain.name = geometry.name;
     CoreMesh original;
-    LoadedMesh info;
+    WeldingStats welded;
     {
-        progress::Span welding(0, progress::kWeldingShare);
-        partToMesh(std::move(geometry.parts), geometry.name, original, settings, info);
+        ProgressSpan span(progress, 0, kWeldingShare);
+        welded = partToMesh(std::move(geometry.parts), geometry.name, original, welding, progress.step);
     }
     chain.triangles = original.fn;
-    chain.weldedVertices = info.mergedVertices;
-    chain.degenerateFaces = info.degenerateFaces;
+    chain.weldedVertices = welded.mergedVertices;
+    chain.degenerateFaces = welded.degenerateFaces;
     LevelStore store;
     {
-        progress::Span levels(progress::kWeldingShare, 100);
+        ProgressSpan span(progress, kWeldingShare, 100);
         chain.result = buildChain(original, store);
     }
     if (!chain.result.ok())
-        throw InputError("part " + geometry.name + ": " + chain.result.error);
+        throw std::runtime_error("part " + geometry.name + ": " + chain.result.error);
     std::vector<CoreMesh*> meshes{&original};
     for (auto& m : store.meshes)
         meshes.push_back(m.get());
@@ -142,8 +142,8 @@ PartChain convertPart(vrml::Geometry& geometry, const ImportSettings& settings, 
 
 }  // namespace
 
-AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelName, const ImportSettings& settings,
-                                   const BuildChain& buildChain, bool chunkLargeParts)
+AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelName, const PartWelding& welding,
+                                   const BuildChain& buildChain, bool chunkLargeParts, const ProgressSpans& progress)
 {
     // What no shared node holds is placed under the input file's name.
     const std::vector<vrml::Placement> placements =
@@ -161,13 +161,13 @@ AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelN
     for (std::size_t d = 0; d < geometries.size(); ++d) {
         vrml::Geometry& geometry = scene.assembly.geometries[geometries[d]];
         const std::size_t triangles = geometry.triangleCount();
-        progress::beginSpan(int(100 * done / std::max<std::size_t>(total, 1)),
+        progress.begin(int(100 * done / std::max<std::size_t>(total, 1)),
                             int(100 * (done + triangles) / std::max<std::size_t>(total, 1)),
                             "part " + std::to_string(d + 1) + "/" + std::to_string(geometries.size()) + " " +
                                 geometry.name);
-        out.parts.push_back(convertPart(geometry, settings, buildChain, chunkedRadius, out.model.definitions[d],
-                                        out.skippedFaces));
-        progress::endSpan();
+        out.parts.push_back(convertPart(geometry, welding, buildChain, chunkedRadius, out.model.definitions[d],
+                                        out.skippedFaces, progress));
+        progress.end();
         done += triangles;
     }
     for (const vrml::Placement& p : placements) {
@@ -178,4 +178,4 @@ AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelN
     return out;
 }
 
-}  // namespace cadlod::cli
+}  // namespace cadlod

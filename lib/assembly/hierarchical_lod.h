@@ -13,15 +13,16 @@
 // the parent's proxy would hide is left out.
 #pragma once
 
-#include "assembly_convert.h"
+#include "assembly/assembly_convert.h"
 
 #include "lod/cluster_tree.h"
+#include "lod/lod_chain.h"
 #include "lod/lod_plan.h"
 
 #include <functional>
 #include <string>
 
-namespace cadlod::cli {
+namespace cadlod {
 
 // The chain of a cluster's merged parts, planned from `nearestDistance` on.
 using BuildProxyChain = std::function<LodSetResult(CoreMesh& merged, LevelStore& store, double nearestDistance)>;
@@ -38,6 +39,14 @@ inline constexpr double kProxyInputShare = 0.5;
 // as this many triangles (the per-call work of a renderer).
 inline constexpr double kDrawCallTriangles = 256.0;
 
+// The fewest Hausdorff samples per side a cluster proxy is measured with.
+inline constexpr std::size_t kProxySamples = 20000;
+
+// A proxy's chain options from the parts' own: planned from `nearestDistance` on; measured
+// with more samples where none were asked for (its parts' levels are measured already, its
+// error must hold over a whole cluster).
+LodChainOptions proxyChainOptions(LodChainOptions options, int triangles, double nearestDistance);
+
 struct HierarchyStats {
     std::size_t clusters = 0;
     std::size_t proxied = 0;         // clusters with at least one proxy
@@ -46,9 +55,9 @@ struct HierarchyStats {
     std::size_t inputTriangles = 0;  // merged into proxies, before simplifying
 };
 
-// Puts c.model's placements into clusters with proxies. Throws InputError when a proxy
-// cannot be built.
-HierarchyStats buildHierarchy(AssemblyConversion& c, const HierarchyOptions& options, const ImportSettings& settings,
-                              const BuildProxyChain& buildProxyChain);
+// Puts c.model's placements into clusters with proxies, each proxy a span of `progress`.
+// Throws std::runtime_error when a proxy cannot be built.
+HierarchyStats buildHierarchy(AssemblyConversion& c, const HierarchyOptions& options, const PartWelding& welding,
+                              const BuildProxyChain& buildProxyChain, const ProgressSpans& progress = {});
 
-}  // namespace cadlod::cli
+}  // namespace cadlod
