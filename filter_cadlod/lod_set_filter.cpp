@@ -1,5 +1,7 @@
 #include "lod_set_filter.h"
 
+#include "hierarchical_lod_file.h"
+
 #include "lod/copy_with_parts.h"
 #include "lod/lod_builder.h"  // buildLodSet<CMeshO>: compiled in cores_for_cmesho.cpp
 #include "lod/lod_chain.h"    // buildLodChain<CMeshO>: likewise
@@ -27,6 +29,12 @@ int nextSetId(MeshDocument& md)
 }
 
 bool chainMode(const RichParameterList& par) { return par.getEnum("levelMode") == 0; }
+
+// Per part and cluster (the hierarchy written to a file) rather than one LOD node as layers.
+bool perPartAndCluster(const RichParameterList& par)
+{
+    return par.hasParameter("hierarchy") && par.getEnum("hierarchy") == 1;
+}
 
 ViewParams readView(const RichParameterList& par)
 {
@@ -143,7 +151,7 @@ void presentLevels(MeshDocument& md, MeshModel& original, MeshModel& level0, con
 
 }  // namespace
 
-void lodSetParameters(MeshModel&, RichParameterList& par)
+void lodSetParameters(MeshModel& m, RichParameterList& par)
 {
     const LodChainOptions chain;
     par.addParam(RichEnum("levelMode", 0, {"By screen-space error (VR)", "Level list (the paper)"}, "Levels by",
@@ -169,6 +177,11 @@ void lodSetParameters(MeshModel&, RichParameterList& par)
     par.addParam(RichInt("samples", 0, "Hausdorff samples",
                          "Surface samples per side to measure each level; 0: automatic."));
     addFeatureParameters(par);
+    par.addParam(RichEnum("hierarchy", 0, {"One LOD node: the levels as layers", "Per part and cluster: to a file"},
+                          "Hierarchy",
+                          "Per part and cluster (VRML assemblies, seen from inside): writes the HLOD file."));
+    par.addParam(RichSaveFile("hierarchyFile", defaultHierarchyFile(m), ".flt", "HLOD file",
+                              "Per part and cluster writes here (empty: beside the input, _hlod.flt)."));
 }
 
 bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichParameterList& par,
@@ -179,6 +192,15 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
     error = validateView(view);
     if (!error.isEmpty())
         return false;
+    if (perPartAndCluster(par)) {
+        if (!chainMode(par)) {
+            error = "per part and cluster needs levels by screen-space error: a level list has no error to switch "
+                    "a proxy by";
+            return false;
+        }
+        return writeHierarchicalLod(plugin, original, readChainOptions(par), par.getSaveFileName("hierarchyFile"), cb,
+                                    error);
+    }
     const int setId = nextSetId(md);
     if (original.cm.fn == 0) {
         error = "the current layer has no faces";

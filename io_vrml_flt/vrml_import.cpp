@@ -105,6 +105,9 @@ bool openVrml(MeshIOInterface& plugin, const QString& fileName, MeshModel& m, in
     const int merged = mesh_io::sceneToMesh(scene, m.cm, toMesh, cb, &built);
     progress(90, "Building mesh");  // the last step the reporter times finish() from
     setMetresPerUnit(m.cm, 1.0);  // VRML's unit; Unit scale is how a file in mm becomes one
+    setVrmlSource(m.cm, VrmlSource{fileName.toStdString(), options.unitScale, options.detectKicadUnits,
+                                   options.upAxis == vrml::UpAxis::YUpToZUp, options.recomputeNormals,
+                                   toMesh.mergeVertices, toMesh.mergeTolerance});
 
     const double seconds = std::max(1e-6, timer.elapsed() / 1000.0);
     char line[1024];

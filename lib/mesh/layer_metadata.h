@@ -4,6 +4,8 @@
 //    "cadlod_part") and stores the part table (per-mesh attribute "cadlod_parts");
 //    the simplifier can keep part borders (keepPartBorders), the OpenFlight exporter writes
 //    one Object per part.
+//  - source: the VRML importer records the file and how it read it (VrmlSource), so that
+//    the LOD-set filter can read it again with its shared parts kept as placements.
 //  - LOD levels: the LOD-set filter stores a LodLevel (per-mesh attribute "cadlod_lod")
 //    on every layer of a set, level 0 being the original; the OpenFlight exporter
 //    gathers the layers of one set from the document and writes them as one LOD model.
@@ -14,6 +16,7 @@
 
 #include <vcg/complex/complex.h>
 
+#include <string>
 #include <vector>
 
 namespace cadlod {
@@ -73,6 +76,35 @@ double metresPerUnit(MeshType& m)
     if (!vcg::tri::HasPerMeshAttribute(m, kMetresPerUnitAttribute))
         return 0.0;
     return vcg::tri::Allocator<MeshType>::template GetPerMeshAttribute<double>(m, kMetresPerUnitAttribute)();
+}
+
+// The VRML file a layer was read from, and the import options it was read with.
+struct VrmlSource {
+    std::string path;
+    double unitScale = 1.0;
+    bool detectKicadUnits = true;
+    bool yUpToZUp = false;
+    bool recomputeNormals = false;
+    bool mergeVertices = true;
+    float mergeTolerance = 0.0f;
+};
+
+inline constexpr const char* kVrmlSourceAttribute = "cadlod_vrml_source";
+
+template <class MeshType>
+void setVrmlSource(MeshType& m, const VrmlSource& source)
+{
+    vcg::tri::Allocator<MeshType>::template GetPerMeshAttribute<VrmlSource>(m, kVrmlSourceAttribute)() = source;
+}
+
+// False when the layer was not read from a VRML file.
+template <class MeshType>
+bool vrmlSource(MeshType& m, VrmlSource& source)
+{
+    if (!vcg::tri::HasPerMeshAttribute(m, kVrmlSourceAttribute))
+        return false;
+    source = vcg::tri::Allocator<MeshType>::template GetPerMeshAttribute<VrmlSource>(m, kVrmlSourceAttribute)();
+    return true;
 }
 
 // Takes the mesh out of its LOD set: a level whose geometry changed (simplified again, ...)

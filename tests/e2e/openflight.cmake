@@ -5,7 +5,7 @@ cadlod_add_e2e_test(e2e_openflight SOURCES test_flt_export.cpp test_flt_import.c
 
 # The command line and the meshlabserver route side by side.
 if(TARGET cadlod)
-  cadlod_add_e2e_test(e2e_headless_routes SOURCES test_cli_vs_meshlabserver.cpp LIBS cadlod::openflight)
+  cadlod_add_e2e_test(e2e_headless_routes SOURCES test_cli_vs_meshlabserver.cpp LIBS cadlod::openflight cadlod_osg_probe)
   target_compile_definitions(e2e_headless_routes PRIVATE CADLOD_CLI="$<TARGET_FILE:cadlod>")
   add_dependencies(e2e_headless_routes cadlod)
 endif()

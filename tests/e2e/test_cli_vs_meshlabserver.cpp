@@ -4,13 +4,17 @@
 // little: the example script scales with MeshLab's Transform filter after import, in float,
 // the command in the importer; README and docs/benchmarks.md say so.) A MeshLab layer is one
 // mesh, so the MeshLab route expands the demo's shared parts: the command does too, here.
+// With Hierarchy "per part and cluster" the filter reads the layer's VRML file again and
+// writes the command's hierarchical LOD itself: the same file.
 #include "meshlabserver_runner.h"
+#include "osg_probe.h"
 
 #include "openflight/flt_reader.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <filesystem>
 
 using namespace cadlod;
 using namespace cadlod::test;
@@ -40,4 +44,82 @@ TEST(HeadlessRoutes, CommandAndMeshlabserverGiveTheSameChain)
         EXPECT_DOUBLE_EQ(a.levels[k].switchOut, b.levels[k].switchOut) << "level " << k;
         EXPECT_DOUBLE_EQ(a.levels[k].switchIn, b.levels[k].switchIn) << "level " << k;
     }
+}
+
+namespace {
+
+const char* const kLodFilter = "Generate CAD LOD Set";
+
+std::string perPartAndCluster(const std::string& file)
+{
+    return mlxScript({mlxFilter(kLodFilter, {mlxParam("RichEnum", "hierarchy", "1"),
+                                             mlxParam("RichSaveFile", "hierarchyFile", file)})});
+}
+
+// The bytes of an OpenFlight file after its header record (which holds the date it was written).
+std::string afterHeader(const std::string& path)
+{
+    const std::string bytes = readText(path);
+    if (bytes.size() < 4)
+        return {};
+    const std::size_t length = (std::size_t((unsigned char)bytes[2]) << 8) | (unsigned char)bytes[3];
+    return bytes.substr(std::min(length, bytes.size()));
+}
+
+}  // namespace
+
+TEST(HeadlessRoutes, PerPartAndClusterWritesTheCommandsHierarchicalLod)
+{
+    const std::string dir = scratchDir("routes_hlod");
+    const std::string demo = std::string(CADLOD_SOURCE_DIR) + "/docs/sample/cad_assembly.wrl.gz";
+    std::filesystem::create_directories(dir + "/server");
+    std::filesystem::create_directories(dir + "/command");
+    const std::string viaServer = dir + "/server/demo.flt", viaCommand = dir + "/command/demo.flt";
+    std::remove(viaServer.c_str());
+    std::remove(viaCommand.c_str());
+    writeText(dir + "/hlod.mlx", perPartAndCluster(viaServer));
+    const ServerRun server = runMeshlabServer({"-i", demo, "-s", dir + "/hlod.mlx"}, 300);
+    ASSERT_TRUE(server.ok()) << server.output;
+    EXPECT_NE(server.output.find("clusters of up to 48 placements"), std::string::npos) << server.output;
+    const std::string command = "env -u DISPLAY " + std::string(CADLOD_CLI) + " convert '" + demo + "' -o '" +
+                                viaCommand + "' > '" + dir + "/command.log' 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << readText(dir + "/command.log");
+
+    const std::string a = afterHeader(viaServer), b = afterHeader(viaCommand);
+    ASSERT_GT(a.size(), 100000u);
+    EXPECT_TRUE(a == b) << "the filter's file differs from the command's: " << a.size() << " against " << b.size()
+                        << " bytes after the header";
+    const OsgProbe probe = probeWithOsg(viaServer);
+    ASSERT_TRUE(probe.loaded);
+    EXPECT_GE(probe.lods.size(), 10u);  // the parts' levels and the cluster's proxies
+}
+
+TEST(HeadlessRoutes, PerPartAndClusterRefusesALayerNotReadFromVrml)
+{
+    const std::string dir = scratchDir("routes_hlod_ply");
+    writeText(dir + "/tetra.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                                  "property float z\nelement face 4\nproperty list uchar int vertex_indices\n"
+                                  "end_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n");
+    const std::string out = dir + "/tetra_hlod.flt";
+    std::remove(out.c_str());
+    writeText(dir + "/hlod.mlx", perPartAndCluster(""));
+    const ServerRun run = runMeshlabServer({"-i", dir + "/tetra.ply", "-s", dir + "/hlod.mlx"}, 120);
+    EXPECT_FALSE(run.ok());
+    EXPECT_NE(run.output.find("open the assembly from its .wrl file"), std::string::npos) << run.output;
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// Only a .flt name is taken: a slip of the file name cannot write over the VRML input.
+TEST(HeadlessRoutes, PerPartAndClusterNeverWritesOverItsInput)
+{
+    const std::string dir = scratchDir("routes_hlod_input");
+    const std::string input = dir + "/demo.wrl.gz";
+    std::filesystem::copy_file(std::string(CADLOD_SOURCE_DIR) + "/docs/sample/cad_assembly.wrl.gz", input,
+                               std::filesystem::copy_options::overwrite_existing);
+    const std::string before = readText(input);
+    writeText(dir + "/hlod.mlx", perPartAndCluster(input));
+    const ServerRun run = runMeshlabServer({"-i", input, "-s", dir + "/hlod.mlx"}, 120);
+    EXPECT_FALSE(run.ok());
+    EXPECT_NE(run.output.find("give it the .flt extension"), std::string::npos) << run.output;
+    EXPECT_TRUE(readText(input) == before);
 }

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <regex>
 
@@ -68,4 +69,22 @@ TEST(Examples, MillimetrePartBecomesAnOpenFlightLodSetInMeters)
         EXPECT_LT(probe.lods[l].triangles.size(), probe.lods[l - 1].triangles.size());
         EXPECT_EQ(probe.lods[l].minRange, probe.lods[l - 1].maxRange);
     }
+}
+
+TEST(Examples, AssemblyBecomesAHierarchicalLodBesideIt)
+{
+    const std::string dir = scratchDir("examples_hlod");
+    const std::string input = dir + "/cad_assembly.wrl.gz", written = dir + "/cad_assembly_hlod.flt";
+    fs::copy_file(std::string(CADLOD_SOURCE_DIR) + "/docs/sample/cad_assembly.wrl.gz", input,
+                  fs::copy_options::overwrite_existing);
+    fs::remove(written);
+    const ServerRun run = runMeshlabServer(
+        {"-i", input, "-s", std::string(CADLOD_SOURCE_DIR) + "/docs/examples/cad_to_hlod_flt.mlx"}, 300);
+    ASSERT_TRUE(run.ok()) << run.output;
+    const OsgProbe probe = probeWithOsg(written);
+    ASSERT_TRUE(probe.loaded) << written;
+    // The parts' levels and the proxies, below a cluster's Group.
+    EXPECT_GE(probe.lods.size(), 10u);
+    EXPECT_TRUE(std::any_of(probe.names.begin(), probe.names.end(),
+                            [](const std::string& name) { return name.rfind("cluster", 0) == 0; }));
 }

@@ -1,0 +1,167 @@
+#include "hierarchical_lod_file.h"
+
+#include "assembly/assembly_convert.h"
+#include "assembly/hierarchical_lod.h"
+#include "assembly/progress_spans.h"
+#include "lod/scale_lengths.h"
+#include "mesh/layer_metadata.h"
+#include "openflight/atomic_file.h"
+#include "openflight/scale_lengths.h"
+#include "vrml/assembly.h"
+#include "vrml/importer.h"
+
+#include <QElapsedTimer>
+#include <QFileInfo>
+
+#include <exception>
+
+namespace cadlod {
+namespace {
+
+// Reading the file takes this share of the progress; writing it the last few percent.
+constexpr int kReadingEnd = 10, kWritingStart = 95;
+// The parts' chains take this share of the rest when proxies follow them.
+constexpr int kPartsShare = 70;
+
+vrml::ImportOptions importOptions(const VrmlSource& source)
+{
+    vrml::ImportOptions o;
+    o.unitScale = source.unitScale;
+    o.detectKicadUnits = source.detectKicadUnits;
+    o.kicadUnitScale = 0.001;  // KiCad's millimetres to metres, as cadlod convert reads them
+    o.upAxis = source.yUpToZUp ? vrml::UpAxis::YUpToZUp : vrml::UpAxis::Keep;
+    o.recomputeNormals = source.recomputeNormals;
+    o.instances = vrml::Instances::Keep;
+    // The simplifier decides alike in every unit at a power of two (vrml/importer.h).
+    o.unitScaling = vrml::UnitScaling::PowerOfTwo;
+    return o;
+}
+
+// The model name cadlod convert gives: the output's name up to its first dot.
+std::string modelName(const QString& output)
+{
+    const std::string name = QFileInfo(output).fileName().toStdString();
+    return name.substr(0, name.find('.'));
+}
+
+// Only a .flt name: the VRML input (.wrl, .wrz, .gz) can never be written over.
+QString checkOutput(const QString& output)
+{
+    if (QFileInfo(output).suffix().toLower() != "flt")
+        return output + ": the HLOD file is OpenFlight; give it the .flt extension";
+    return {};
+}
+
+struct Converted {
+    AssemblyConversion conversion;
+    HierarchyStats hierarchy;
+    double lengthScale = 1.0;
+};
+
+// The assembly of `source`, its placements in clusters with proxies; throws with the reason.
+Converted convert(const VrmlSource& source, const LodChainOptions& chain, const std::string& name,
+                  CallbackSpans& progress)
+{
+    vrml::ImportResult imported = vrml::importVrmlFile(source.path, importOptions(source));
+    if (!imported.ok())
+        throw std::runtime_error(imported.error);
+    vrml::Scene& scene = imported.scene;
+    if (scene.assembly.empty() && vrml::namedParts(scene.parts) > 1)
+        scene.assembly = vrml::partsPlacedOnce(std::move(scene.parts));
+    if (scene.assembly.placementCount() < 2)
+        throw std::runtime_error(source.path + ": one part, nothing to put in clusters; use Hierarchy: one LOD node");
+    Converted out;
+    out.lengthScale = imported.assumed.remainingScale;
+    LodChainOptions options = chain;
+    options.distanceUnit = "m";
+    options.distanceScale = out.lengthScale;
+    const auto build = [&](CoreMesh& mesh, LevelStore& store, double nearest) {
+        CoreMesh scratch;
+        const auto newLevel = [&](int) -> CoreMesh& { return store.add(); };
+        return buildLodChain<CoreMesh>(mesh, scratch, proxyChainOptions(options, mesh.fn, nearest), newLevel,
+                                       progress.spans().step);
+    };
+    PartWelding welding{source.mergeVertices, float(source.mergeTolerance / out.lengthScale)};
+    const ProgressSpans spans = progress.spans();
+    {
+        ProgressSpan parts(spans, kReadingEnd, kReadingEnd + (kWritingStart - kReadingEnd) * kPartsShare / 100,
+                           "");
+        out.conversion = convertAssembly(
+            scene, name, welding, [&](CoreMesh& m, LevelStore& store) { return build(m, store, 0.0); }, true, spans);
+    }
+    HierarchyOptions hierarchy;
+    hierarchy.view = chain.view;
+    {
+        ProgressSpan proxies(spans, kReadingEnd + (kWritingStart - kReadingEnd) * kPartsShare / 100, kWritingStart);
+        out.hierarchy = buildHierarchy(out.conversion, hierarchy, welding, build, spans);
+    }
+    flt::scaleLengths(out.conversion.model, out.lengthScale);
+    for (PartChain& part : out.conversion.parts)
+        scaleLengths(part.result, out.lengthScale);
+    return out;
+}
+
+void logConversion(MeshFilterInterface& plugin, const Converted& c, const QString& output,
+                   const flt::InstancedWriteStats& written, double seconds)
+{
+    std::size_t placements = c.conversion.model.placements.size();
+    plugin.Log("CAD LOD set, per part and cluster: %zu distinct parts in %zu placements, each part's chain once; "
+               "%zu clusters of up to %zu placements (%zu per node), %zu with proxies: %zu proxy levels, %zu "
+               "triangles merged from %zu",
+               c.conversion.parts.size(), placements, c.hierarchy.clusters, ClusterTreeOptions{}.leafItems,
+               ClusterTreeOptions{}.fanout, c.hierarchy.proxied, c.hierarchy.proxyLevels, c.hierarchy.proxyTriangles,
+               c.hierarchy.inputTriangles);
+    plugin.Log("CAD LOD set, per part and cluster: wrote %s: %zu bytes, %zu triangles in %.2f s (the document is "
+               "unchanged: a layer cannot hold instances)",
+               qUtf8Printable(output), written.bytes, written.triangles, seconds);
+}
+
+}  // namespace
+
+QString defaultHierarchyFile(const MeshModel& layer)
+{
+    if (layer.fullName().isEmpty())
+        return {};
+    const QFileInfo input(layer.fullName());
+    QString name = input.fileName();
+    if (name.endsWith(".gz", Qt::CaseInsensitive))
+        name.chop(3);
+    return input.absolutePath() + "/" + QFileInfo(name).completeBaseName() + "_hlod.flt";
+}
+
+bool writeHierarchicalLod(MeshFilterInterface& plugin, MeshModel& layer, const LodChainOptions& chain,
+                          const QString& chosen, vcg::CallBackPos* cb, QString& error)
+{
+    const QString output = chosen.isEmpty() ? defaultHierarchyFile(layer) : chosen;
+    VrmlSource source;
+    if (!vrmlSource(layer.cm, source)) {
+        error = layer.label() + ": a hierarchical LOD reads the assembly's VRML file again, its shared parts kept; "
+                                "open the assembly from its .wrl file";
+        return false;
+    }
+    error = checkOutput(output);
+    if (!error.isEmpty())
+        return false;
+    QElapsedTimer timer;
+    timer.start();
+    CallbackSpans progress(cb);
+    try {
+        const Converted c = convert(source, chain, modelName(output), progress);
+        flt::InstancedWriteStats written;
+        std::string why;
+        const ProgressSpans spans = progress.spans();
+        ProgressSpan writing(spans, kWritingStart, 100, "Writing OpenFlight");
+        if (!flt::writeInstancedOpenFlightFile(output.toStdString(), c.conversion.model, flt::WriteOptions{}, why,
+                                               &written)) {
+            error = QString::fromStdString(why);
+            return false;
+        }
+        logConversion(plugin, c, output, written, timer.elapsed() / 1000.0);
+    } catch (const std::exception& e) {
+        error = QString::fromStdString(e.what());
+        return false;
+    }
+    return true;
+}
+
+}  // namespace cadlod
