@@ -23,12 +23,13 @@ constexpr int kReadingEnd = 10, kWritingStart = 95;
 // The parts' chains take this share of the rest when proxies follow them.
 constexpr int kPartsShare = 70;
 
+// As the layer was read, so that the file holds the layer's coordinates, but with the shared
+// parts kept.
 vrml::ImportOptions importOptions(const VrmlSource& source)
 {
     vrml::ImportOptions o;
     o.unitScale = source.unitScale;
     o.detectKicadUnits = source.detectKicadUnits;
-    o.kicadUnitScale = 0.001;  // KiCad's millimetres to metres, as cadlod convert reads them
     o.upAxis = source.yUpToZUp ? vrml::UpAxis::YUpToZUp : vrml::UpAxis::Keep;
     o.recomputeNormals = source.recomputeNormals;
     o.instances = vrml::Instances::Keep;
