@@ -35,8 +35,8 @@ struct ConvertArgs {
     std::string lod = "auto";
     std::string instances = "keep";
     std::string hlod = "auto";
-    std::size_t clusterParts = ClusterTreeOptions{}.leafItems;
-    std::size_t clusterFanout = ClusterTreeOptions{}.fanout;
+    std::size_t clusterParts = 0;   // 0: the default of the --hlod mode
+    std::size_t clusterFanout = 0;
     double pixelError = 1.0, fov = 45.0, viewport = 1080.0, distanceRatio = 2.0, cullPixels = 0.0,
            proxyPixels = 8.0;
     bool fromOriginal = false;
@@ -63,6 +63,21 @@ ViewParams viewOf(const ConvertArgs& a)
     v.viewportHeightPx = a.viewport;
     v.pixelThreshold = a.pixelError;
     return v;
+}
+
+// --hlod auto: the placements in clusters with merged proxies, when the chain plans the
+// levels (a level list has no error to switch a proxy by) and there are parts to cluster.
+bool hierarchical(const ConvertArgs& a) { return a.hlod != "off" && a.lod == "auto"; }
+
+// --hlod calls: small clusters drawn as their parts merged (HierarchyOptions::fewestCalls).
+ClusterTreeOptions clusterTree(const ConvertArgs& a)
+{
+    ClusterTreeOptions tree = a.hlod == "calls" ? kFewestCallsTree : ClusterTreeOptions{};
+    if (a.clusterParts > 0)
+        tree.leafItems = a.clusterParts;
+    if (a.clusterFanout > 0)
+        tree.fanout = a.clusterFanout;
+    return tree;
 }
 
 // The shares of the one progress bar: reading is quick beside the LOD chain, writing quicker.
@@ -115,8 +130,8 @@ nlohmann::json optionsJson(const ConvertArgs& a, const LoadedMesh& loaded)
     return {{"lod", a.lod},
             {"instances", a.instances},
             {"hlod", a.hlod},
-            {"clusterParts", a.clusterParts},
-            {"clusterFanout", a.clusterFanout},
+            {"clusterParts", clusterTree(a).leafItems},
+            {"clusterFanout", clusterTree(a).fanout},
             {"pixelError", a.pixelError},
             {"fovY", a.fov},
             {"viewport", a.viewport},
@@ -248,10 +263,6 @@ nlohmann::json assemblyReportJson(const ConvertArgs& a, const AssemblyConversion
                      {"totalSeconds", totalSeconds}}}};
 }
 
-// --hlod auto: the placements in clusters with merged proxies, when the chain plans the
-// levels (a level list has no error to switch a proxy by) and there are parts to cluster.
-bool hierarchical(const ConvertArgs& a) { return a.hlod == "auto" && a.lod == "auto"; }
-
 bool clustersPlacements(const ConvertArgs& a, const AssemblyConversion& c)
 {
     return hierarchical(a) && c.model.placements.size() > 1;
@@ -263,9 +274,9 @@ HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, co
     if (!clustersPlacements(a, c))
         return {};
     HierarchyOptions options;
-    options.tree.leafItems = a.clusterParts;
-    options.tree.fanout = a.clusterFanout;
+    options.tree = clusterTree(a);
     options.view = viewOf(a);
+    options.fewestCalls = a.hlod == "calls";
     const auto chain = [&](CoreMesh& merged, LevelStore& store, double nearest) {
         return buildLevels(a, lengthScale, merged, store, nearest);
     };
@@ -280,21 +291,21 @@ nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
             {"proxyLevels", h.proxyLevels},
             {"proxyTriangles", h.proxyTriangles},
             {"mergedTriangles", h.inputTriangles},
-            {"clusterParts", a.clusterParts},
-            {"fanout", a.clusterFanout}};
+            {"clusterParts", clusterTree(a).leafItems},
+            {"fanout", clusterTree(a).fanout}};
 }
 
 void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
 {
     if (h.clusters == 0) {
         std::fprintf(stderr, "cadlod: hlod off: one LOD node per placed part%s\n",
-                     a.hlod == "auto" ? (a.lod == "auto" ? " (one placement)" : " (a level list has no errors)") : "");
+                     a.hlod != "off" ? (a.lod == "auto" ? " (one placement)" : " (a level list has no errors)") : "");
         return;
     }
     std::fprintf(stderr,
-                 "cadlod: hlod: %zu clusters of up to %zu placements (%zu per node), %zu with proxies: %zu proxy "
+                 "cadlod: hlod %s: %zu clusters of up to %zu placements (%zu per node), %zu with proxies: %zu proxy "
                  "levels, %zu triangles, merged from %zu\n",
-                 h.clusters, a.clusterParts, a.clusterFanout, h.proxied, h.proxyLevels, h.proxyTriangles,
+                 a.hlod.c_str(), h.clusters, clusterTree(a).leafItems, clusterTree(a).fanout, h.proxied, h.proxyLevels, h.proxyTriangles,
                  h.inputTriangles);
 }
 
@@ -488,16 +499,17 @@ void addConvertCommand(CLI::App& app)
         ->capture_default_str();
     cmd->add_option("--hlod", args->hlod,
                     "auto: the placements of an assembly in clusters of nearby parts, each drawn far off as one "
-                    "merged, simplified proxy (switch distances held at every node's nearest point); off: one LOD "
-                    "node per part")
-        ->check(CLI::IsMember({"auto", "off"}))
+                    "merged, simplified proxy (switch distances held at every node's nearest point); calls: the "
+                    "fewest draw calls near the viewer, small clusters drawn as their parts merged (files about "
+                    "4x larger); off: one LOD node per part")
+        ->check(CLI::IsMember({"auto", "calls", "off"}))
         ->capture_default_str();
-    cmd->add_option("--cluster-parts", args->clusterParts, "hlod: at most this many placements in a leaf cluster")
-        ->check(CLI::PositiveNumber)
-        ->capture_default_str();
-    cmd->add_option("--cluster-fanout", args->clusterFanout, "hlod: at most this many nodes below a cluster")
-        ->check(CLI::Range(2, 64))
-        ->capture_default_str();
+    cmd->add_option("--cluster-parts", args->clusterParts,
+                    "hlod: at most this many placements in a leaf cluster [default: 48, calls: 2]")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--cluster-fanout", args->clusterFanout,
+                    "hlod: at most this many nodes below a cluster [default: 8, calls: 2]")
+        ->check(CLI::Range(2, 64));
     cmd->add_flag("--from-original", args->fromOriginal, "List: simplify every level from the original");
     cmd->add_option("--samples", args->samples, "Hausdorff samples per side (0: automatic)");
     cmd->add_option("--report", args->report, "Write a JSON report here");

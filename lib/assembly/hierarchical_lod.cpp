@@ -5,6 +5,7 @@
 #include "lod/nearest_point.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -52,6 +53,7 @@ struct Candidate {
     flt::Level level;
     double error = 0;
     double reach = 0;
+    double drawnFrom = 0;  // where it may first be drawn when not by its error (0: by its error)
 };
 
 struct ClusterWork {
@@ -164,6 +166,86 @@ private:
     std::size_t triangles_ = 0;
 };
 
+// Levels placed in the model and appended into one part whose vertices carry the colours:
+// one drawable, its pieces unchanged.
+class LevelMerger {
+public:
+    void add(const flt::Level& level, const flt::Mat4d& m, bool mirrored)
+    {
+        const std::array<Vec3d, 3> normalMatrix = inverseTranspose(m);
+        for (const flt::Part& part : level.parts) {
+            const auto first = std::uint32_t(out_.positions.size());
+            normals_ = normals_ && part.hasNormals();
+            for (std::size_t v = 0; v < part.positions.size(); ++v) {
+                out_.positions.push_back(transformed(m, part.positions[v]));
+                out_.vertexColors.push_back(part.hasVertexColors() ? part.vertexColors[v] : part.color);
+                if (normals_)
+                    out_.normals.push_back(turned(normalMatrix, part.normals[v]));
+            }
+            for (std::size_t t = 0; t < part.triangles.size(); ++t) {
+                flt::Triangle tri = part.triangles[t];
+                for (std::uint32_t& v : tri)
+                    v += first;
+                if (mirrored)
+                    std::swap(tri[1], tri[2]);
+                out_.triangles.push_back(tri);
+            }
+            if (part.hasTriangleColors() && !part.hasVertexColors())
+                normals_ = false, faceColours_ = true;
+        }
+    }
+
+    bool empty() const { return out_.triangles.empty(); }
+
+    // Null when a piece had colours per face only, which one Mesh record cannot draw.
+    bool take(const std::string& name, const Vec3d& centre, flt::Level& level)
+    {
+        if (faceColours_)
+            return false;
+        if (!normals_)
+            out_.normals.clear();
+        out_.name = name;
+        if (!out_.vertexColors.empty())
+            out_.color = out_.vertexColors.front();
+        level.parts.assign(1, std::move(out_));
+        level.center = centre;
+        return true;
+    }
+
+private:
+    static std::array<Vec3d, 3> inverseTranspose(const flt::Mat4d& m)
+    {
+        const auto a = [&](int r, int c) { return m[r][c]; };
+        const double det = a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) -
+                           a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0)) +
+                           a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0));
+        const double k = det != 0 ? 1.0 / det : 0.0;
+        // The cofactors over the determinant: the inverse's transpose.
+        return {Vec3d{k * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)), k * (a(1, 2) * a(2, 0) - a(1, 0) * a(2, 2)),
+                      k * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0))},
+                Vec3d{k * (a(0, 2) * a(2, 1) - a(0, 1) * a(2, 2)), k * (a(0, 0) * a(2, 2) - a(0, 2) * a(2, 0)),
+                      k * (a(0, 1) * a(2, 0) - a(0, 0) * a(2, 1))},
+                Vec3d{k * (a(0, 1) * a(1, 2) - a(0, 2) * a(1, 1)), k * (a(0, 2) * a(1, 0) - a(0, 0) * a(1, 2)),
+                      k * (a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0))}};
+    }
+
+    static flt::Vec3f turned(const std::array<Vec3d, 3>& n, const flt::Vec3f& v)
+    {
+        Vec3d out{};
+        for (int r = 0; r < 3; ++r)
+            out[r] = n[r][0] * v[0] + n[r][1] * v[1] + n[r][2] * v[2];
+        const double length = std::sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
+        if (length > 0)
+            for (double& c : out)
+                c /= length;
+        return {float(out[0]), float(out[1]), float(out[2])};
+    }
+
+    flt::Part out_;
+    bool normals_ = true;
+    bool faceColours_ = false;
+};
+
 // A level's draw calls: one per colour of each part (a Mesh record per colour).
 std::size_t drawables(const flt::Level& level)
 {
@@ -240,6 +322,13 @@ private:
         work.radius = node.box.halfDiagonal();
         if (node.children.size() + node.items.size() < 2)
             return;  // its one part or cluster is drawn as itself
+        if (options_.fewestCalls) {
+            addMergedCandidate(n);
+            if (placementsBelow(n) < kSimplifiedClusterPlacements) {
+                select(n);
+                return;
+            }
+        }
         // The error a proxy may show where it can first be drawn, at its nearest point.
         const double nearest = switchAtNearestPoint(0.0, work.radius);
         const double allowance = kProxyInputShare * detail::errorBudgetAt(nearest - work.radius, options_.view);
@@ -257,6 +346,61 @@ private:
         select(n);
     }
 
+    std::size_t placementsBelow(std::size_t n) const
+    {
+        std::size_t count = nodes_[n].items.size();
+        for (std::size_t child : nodes_[n].children)
+            count += placementsBelow(child);
+        return count;
+    }
+
+    // The first proxy only merges: what the cluster holds, each piece at the level it shows
+    // from the nearest distance the eye can have to it while the proxy is drawn, so that every
+    // piece keeps its own error bound; one draw call where there were many.
+    void addMergedCandidate(std::size_t n)
+    {
+        ClusterWork& work = work_[n];
+        const double from = switchAtNearestPoint(0.0, work.radius);
+        LevelMerger merger;
+        Candidate candidate;
+        collectAt(n, work.centre, from, merger, candidate.error);
+        if (merger.empty() || !merger.take("proxy", work.centre, candidate.level))
+            return;
+        candidate.reach = candidate.level.reachFrom(work.centre);
+        candidate.drawnFrom = switchAtNearestPoint(0.0, candidate.reach);
+        work.candidates.push_back(std::move(candidate));
+    }
+
+    // What cluster m draws when the eye is `from` off `centre`: each piece seen from its
+    // nearest possible distance.
+    void collectAt(std::size_t m, const Vec3d& centre, double from, LevelMerger& merger, double& error) const
+    {
+        for (std::size_t p : nodes_[m].items) {
+            const flt::PartPlacement& placement = c_.model.placements[p];
+            const std::vector<flt::Level>& levels = c_.model.definitions[placement.definition].levels;
+            const double offset = distance(centre, transformed(placement.matrix, levels.front().center));
+            const std::size_t k = levelIndexAt(placement, std::max(0.0, from - offset));
+            merger.add(levels[k], placement.matrix, placement.mirrored());
+            const std::vector<LodLevel>& measured = c_.parts[placement.definition].result.levels;
+            if (k < measured.size())
+                error = std::max(error, largestScale(placement.matrix) * measured[k].hausdorffMax);
+        }
+        for (std::size_t child : nodes_[m].children) {
+            const ClusterWork& below = work_[child];
+            const double d = from - distance(centre, below.centre);
+            const Candidate* proxy = nullptr;
+            for (std::size_t i = 0; i < below.selected.size(); ++i)
+                if (below.from[i] <= d)
+                    proxy = &below.candidates[below.selected[i]];
+            if (!proxy) {
+                collectAt(child, centre, from, merger, error);
+                continue;
+            }
+            merger.add(proxy->level, kIdentity, false);
+            error = std::max(error, proxy->error);
+        }
+    }
+
     // A candidate is drawn from where it holds at the nearest point, if it is lighter there
     // than what the cluster holds; a coarser one that holds as near serves instead.
     void select(std::size_t n)
@@ -264,7 +408,8 @@ private:
         ClusterWork& work = work_[n];
         for (std::size_t k = 0; k < work.candidates.size(); ++k) {
             const Candidate& candidate = work.candidates[k];
-            const double s = switchDistance(candidate.error, candidate.reach);
+            const double s =
+                candidate.drawnFrom > 0 ? candidate.drawnFrom : switchDistance(candidate.error, candidate.reach);
             if (drawCost(candidate.level) >= drawnBelow(n, s))
                 continue;
             while (!work.from.empty() && s <= work.from.back()) {
@@ -299,12 +444,18 @@ private:
 
     const flt::Level& placedLevelAt(const flt::PartPlacement& p, double d) const
     {
+        return c_.model.definitions[p.definition].levels[levelIndexAt(p, d)];
+    }
+
+    // The level placement p shows at distance d from its centre.
+    std::size_t levelIndexAt(const flt::PartPlacement& p, double d) const
+    {
         const std::vector<flt::Level>& levels = c_.model.definitions[p.definition].levels;
         const double local = d / std::max(largestScale(p.matrix), 1e-300);
-        for (const flt::Level& l : levels)
-            if (l.switchOut <= local && local < l.switchIn)
-                return l;
-        return local < levels.front().switchIn ? levels.front() : levels.back();
+        for (std::size_t k = 0; k < levels.size(); ++k)
+            if (levels[k].switchOut <= local && local < levels[k].switchIn)
+                return k;
+        return local < levels.front().switchIn ? 0 : levels.size() - 1;
     }
 
     // What cluster n holds, each at its coarsest level within `allowance`.

@@ -30,7 +30,20 @@ using BuildProxyChain = std::function<LodSetResult(CoreMesh& merged, LevelStore&
 struct HierarchyOptions {
     ClusterTreeOptions tree;
     ViewParams view;
+    // Fewest draw calls near the viewer: every cluster is also drawn, from six radii off, as
+    // its parts merged unchanged, each at the level it shows from its nearest possible
+    // distance (so that every part keeps its own error), in one draw call; only clusters of
+    // kSimplifiedClusterPlacements or more also get simplified proxies. Merging gives up
+    // instancing: the file holds about the expanded model's geometry again.
+    bool fewestCalls = false;
 };
+
+// With fewestCalls, the fewest placements a cluster holds to get simplified proxies too.
+inline constexpr std::size_t kSimplifiedClusterPlacements = 48;
+
+// With fewestCalls, the tree: leaves of two placements, two nodes below a cluster, so that
+// clusters are small wherever the viewer is.
+inline constexpr ClusterTreeOptions kFewestCallsTree{2, 2};
 
 // Of the error a proxy may show where it is first drawn, the share its input may use.
 inline constexpr double kProxyInputShare = 0.5;

@@ -165,6 +165,40 @@ TEST(CliHierarchicalLod, TheClusterFanoutShapesTheTree)
         expectEveryPlacementOnceWithinTheBound(osg.drawFrom(eye), eye);
 }
 
+// --hlod calls: leaves of two placements, every cluster also drawn as its parts merged
+// unchanged; the bound holds and every placement is drawn once, with fewer draw calls near
+// and inside the grid than the default's.
+TEST(CliHierarchicalLod, TheFewestCallsModeDrawsFewerNearTheEye)
+{
+    const std::string dir = freshDirectory("hlod_calls");
+    const std::string input = writeGrid(dir);
+    const CliRun calls = runCadlod({"convert", input, "-o", dir + "/calls.flt", "--hlod", "calls", "--report",
+                                    dir + "/calls.json"});
+    ASSERT_EQ(calls.exitCode, 0) << calls.stderrText;
+    ASSERT_EQ(runCadlod({"convert", input, "-o", dir + "/auto.flt"}).exitCode, 0);
+    const nlohmann::json hlod = nlohmann::json::parse(readFile(dir + "/calls.json")).at("hlod");
+    EXPECT_EQ(hlod.at("mode"), "calls");
+    EXPECT_EQ(hlod.at("clusterParts").get<int>(), 2);
+    EXPECT_EQ(hlod.at("fanout").get<int>(), 2);
+    EXPECT_EQ(hlod.at("clusters").get<int>(), 127);  // 128 placements halved down to pairs
+
+    const OsgViewProbe fewest(dir + "/calls.flt", "calls"), standard(dir + "/auto.flt", "auto");
+    ASSERT_TRUE(fewest.loaded() && standard.loaded());
+    std::size_t fewestNear = 0, standardNear = 0;
+    const std::vector<Point3> eyes = eyePoints(fewest.bounds());
+    constexpr std::size_t kInsideAndWalking = 4 * 4 * 2 + 20;  // eyePoints' first
+    for (std::size_t i = 0; i < eyes.size(); ++i) {
+        const OsgView view = fewest.drawFrom(eyes[i]);
+        expectEveryPlacementOnceWithinTheBound(view, eyes[i]);
+        if (i < kInsideAndWalking) {
+            fewestNear += view.drawables;
+            standardNear += standard.drawFrom(eyes[i]).drawables;
+        }
+    }
+    ASSERT_GT(standardNear, 0u);
+    EXPECT_LT(4 * fewestNear, 3 * standardNear) << fewestNear << " drawables against " << standardNear;
+}
+
 }  // namespace cadlod::test
 
 namespace cadlod::test {
