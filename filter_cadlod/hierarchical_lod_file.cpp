@@ -60,8 +60,8 @@ struct Converted {
 };
 
 // The assembly of `source`, its placements in clusters with proxies; throws with the reason.
-Converted convert(const VrmlSource& source, const LodChainOptions& chain, const std::string& name,
-                  CallbackSpans& progress)
+Converted convert(const VrmlSource& source, const LodChainOptions& chain, bool fewestCalls,
+                  const std::string& name, CallbackSpans& progress)
 {
     vrml::ImportResult imported = vrml::importVrmlFile(source.path, importOptions(source));
     if (!imported.ok())
@@ -92,6 +92,9 @@ Converted convert(const VrmlSource& source, const LodChainOptions& chain, const 
     }
     HierarchyOptions hierarchy;
     hierarchy.view = chain.view;
+    hierarchy.fewestCalls = fewestCalls;
+    if (fewestCalls)
+        hierarchy.tree = kFewestCallsTree;
     {
         ProgressSpan proxies(spans, kReadingEnd + (kWritingStart - kReadingEnd) * kPartsShare / 100, kWritingStart);
         out.hierarchy = buildHierarchy(out.conversion, hierarchy, welding, build, spans);
@@ -102,15 +105,14 @@ Converted convert(const VrmlSource& source, const LodChainOptions& chain, const 
     return out;
 }
 
-void logConversion(MeshFilterInterface& plugin, const Converted& c, const QString& output,
-                   const flt::InstancedWriteStats& written, double seconds)
+void logConversion(MeshFilterInterface& plugin, const Converted& c, const ClusterTreeOptions& tree,
+                   const QString& output, const flt::InstancedWriteStats& written, double seconds)
 {
-    std::size_t placements = c.conversion.model.placements.size();
+    const std::size_t placements = c.conversion.model.placements.size();
     plugin.Log("CAD LOD set, per part and cluster: %zu distinct parts in %zu placements, each part's chain once; "
                "%zu clusters of up to %zu placements (%zu per node), %zu with proxies: %zu proxy levels, %zu "
                "triangles merged from %zu",
-               c.conversion.parts.size(), placements, c.hierarchy.clusters, ClusterTreeOptions{}.leafItems,
-               ClusterTreeOptions{}.fanout, c.hierarchy.proxied, c.hierarchy.proxyLevels, c.hierarchy.proxyTriangles,
+               c.conversion.parts.size(), placements, c.hierarchy.clusters, tree.leafItems, tree.fanout, c.hierarchy.proxied, c.hierarchy.proxyLevels, c.hierarchy.proxyTriangles,
                c.hierarchy.inputTriangles);
     plugin.Log("CAD LOD set, per part and cluster: wrote %s: %zu bytes, %zu triangles in %.2f s (the document is "
                "unchanged: a layer cannot hold instances)",
@@ -131,7 +133,7 @@ QString defaultHierarchyFile(const MeshModel& layer)
 }
 
 bool writeHierarchicalLod(MeshFilterInterface& plugin, MeshModel& layer, const LodChainOptions& chain,
-                          const QString& chosen, vcg::CallBackPos* cb, QString& error)
+                          bool fewestCalls, const QString& chosen, vcg::CallBackPos* cb, QString& error)
 {
     const QString output = chosen.isEmpty() ? defaultHierarchyFile(layer) : chosen;
     VrmlSource source;
@@ -147,7 +149,7 @@ bool writeHierarchicalLod(MeshFilterInterface& plugin, MeshModel& layer, const L
     timer.start();
     CallbackSpans progress(cb);
     try {
-        const Converted c = convert(source, chain, modelName(output), progress);
+        const Converted c = convert(source, chain, fewestCalls, modelName(output), progress);
         flt::InstancedWriteStats written;
         std::string why;
         const ProgressSpans spans = progress.spans();
@@ -157,7 +159,8 @@ bool writeHierarchicalLod(MeshFilterInterface& plugin, MeshModel& layer, const L
             error = QString::fromStdString(why);
             return false;
         }
-        logConversion(plugin, c, output, written, timer.elapsed() / 1000.0);
+        logConversion(plugin, c, fewestCalls ? kFewestCallsTree : ClusterTreeOptions{}, output, written,
+                      timer.elapsed() / 1000.0);
     } catch (const std::exception& e) {
         error = QString::fromStdString(e.what());
         return false;

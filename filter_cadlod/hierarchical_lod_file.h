@@ -18,10 +18,11 @@ namespace cadlod {
 QString defaultHierarchyFile(const MeshModel& layer);
 
 // Writes the hierarchical LOD of `layer`'s assembly to `output` (empty: the default file),
-// the chain planned by `chain`. False with `error` (the file and what went wrong) when the
+// the chain planned by `chain`; `fewestCalls` as `--hlod calls` (assembly/hierarchical_lod.h,
+// HierarchyOptions). False with `error` (the file and what went wrong) when the
 // layer was not read from VRML, the output is not a .flt file, or the conversion fails;
 // nothing is written then.
 bool writeHierarchicalLod(MeshFilterInterface& plugin, MeshModel& layer, const LodChainOptions& chain,
-                          const QString& chosen, vcg::CallBackPos* cb, QString& error);
+                          bool fewestCalls, const QString& chosen, vcg::CallBackPos* cb, QString& error);
 
 }  // namespace cadlod

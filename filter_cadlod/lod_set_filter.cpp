@@ -33,7 +33,7 @@ bool chainMode(const RichParameterList& par) { return par.getEnum("levelMode") =
 // Per part and cluster (the hierarchy written to a file) rather than one LOD node as layers.
 bool perPartAndCluster(const RichParameterList& par)
 {
-    return par.hasParameter("hierarchy") && par.getEnum("hierarchy") == 1;
+    return par.hasParameter("hierarchy") && par.getEnum("hierarchy") >= 1;
 }
 
 ViewParams readView(const RichParameterList& par)
@@ -177,7 +177,9 @@ void lodSetParameters(MeshModel& m, RichParameterList& par)
     par.addParam(RichInt("samples", 0, "Hausdorff samples",
                          "Surface samples per side to measure each level; 0: automatic."));
     addFeatureParameters(par);
-    par.addParam(RichEnum("hierarchy", 0, {"One LOD node: the levels as layers", "Per part and cluster: to a file"},
+    par.addParam(RichEnum("hierarchy", 0,
+                          {"One LOD node: the levels as layers", "Per part and cluster: to a file",
+                           "Per part and cluster, fewest draw calls: to a file"},
                           "Hierarchy",
                           "Per part and cluster (VRML assemblies, seen from inside): writes the HLOD file."));
     par.addParam(RichSaveFile("hierarchyFile", defaultHierarchyFile(m), ".flt", "HLOD file",
@@ -198,8 +200,9 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
                     "a proxy by";
             return false;
         }
-        return writeHierarchicalLod(plugin, original, readChainOptions(par), par.getSaveFileName("hierarchyFile"), cb,
-                                    error);
+        const bool fewestCalls = par.getEnum("hierarchy") == 2;
+        return writeHierarchicalLod(plugin, original, readChainOptions(par), fewestCalls,
+                                    par.getSaveFileName("hierarchyFile"), cb, error);
     }
     const int setId = nextSetId(md);
     if (original.cm.fn == 0) {

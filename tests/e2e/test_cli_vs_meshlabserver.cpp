@@ -50,9 +50,10 @@ namespace {
 
 const char* const kLodFilter = "Generate CAD LOD Set";
 
-std::string perPartAndCluster(const std::string& file)
+// Hierarchy 1: per part and cluster; 2: the same with the fewest draw calls.
+std::string perPartAndCluster(const std::string& file, const std::string& hierarchy = "1")
 {
-    return mlxScript({mlxFilter(kLodFilter, {mlxParam("RichEnum", "hierarchy", "1"),
+    return mlxScript({mlxFilter(kLodFilter, {mlxParam("RichEnum", "hierarchy", hierarchy),
                                              mlxParam("RichSaveFile", "hierarchyFile", file)})});
 }
 
@@ -66,23 +67,23 @@ std::string afterHeader(const std::string& path)
     return bytes.substr(std::min(length, bytes.size()));
 }
 
-}  // namespace
-
-TEST(HeadlessRoutes, PerPartAndClusterWritesTheCommandsHierarchicalLod)
+// The filter's file against the command's, for Hierarchy `hierarchy` and `cadlod convert
+// --hlod option`.
+void expectTheCommandsFile(const std::string& hierarchy, const std::string& option)
 {
-    const std::string dir = scratchDir("routes_hlod");
+    const std::string dir = scratchDir("routes_hlod_" + option);
     const std::string demo = std::string(CADLOD_SOURCE_DIR) + "/docs/sample/cad_assembly.wrl.gz";
     std::filesystem::create_directories(dir + "/server");
     std::filesystem::create_directories(dir + "/command");
     const std::string viaServer = dir + "/server/demo.flt", viaCommand = dir + "/command/demo.flt";
     std::remove(viaServer.c_str());
     std::remove(viaCommand.c_str());
-    writeText(dir + "/hlod.mlx", perPartAndCluster(viaServer));
+    writeText(dir + "/hlod.mlx", perPartAndCluster(viaServer, hierarchy));
     const ServerRun server = runMeshlabServer({"-i", demo, "-s", dir + "/hlod.mlx"}, 300);
     ASSERT_TRUE(server.ok()) << server.output;
-    EXPECT_NE(server.output.find("clusters of up to 48 placements"), std::string::npos) << server.output;
-    const std::string command = "env -u DISPLAY " + std::string(CADLOD_CLI) + " convert '" + demo + "' -o '" +
-                                viaCommand + "' > '" + dir + "/command.log' 2>&1";
+    EXPECT_NE(server.output.find("clusters of up to"), std::string::npos) << server.output;
+    const std::string command = "env -u DISPLAY " + std::string(CADLOD_CLI) + " convert '" + demo + "' --hlod " +
+                                option + " -o '" + viaCommand + "' > '" + dir + "/command.log' 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << readText(dir + "/command.log");
 
     const std::string a = afterHeader(viaServer), b = afterHeader(viaCommand);
@@ -91,7 +92,19 @@ TEST(HeadlessRoutes, PerPartAndClusterWritesTheCommandsHierarchicalLod)
                         << " bytes after the header";
     const OsgProbe probe = probeWithOsg(viaServer);
     ASSERT_TRUE(probe.loaded);
-    EXPECT_GE(probe.lods.size(), 10u);  // the parts' levels and the cluster's proxies
+    EXPECT_GE(probe.lods.size(), 10u);  // the parts' levels and the clusters' proxies
+}
+
+}  // namespace
+
+TEST(HeadlessRoutes, PerPartAndClusterWritesTheCommandsHierarchicalLod)
+{
+    expectTheCommandsFile("1", "auto");
+}
+
+TEST(HeadlessRoutes, FewestDrawCallsWritesTheCommandsToo)
+{
+    expectTheCommandsFile("2", "calls");
 }
 
 TEST(HeadlessRoutes, PerPartAndClusterRefusesALayerNotReadFromVrml)
