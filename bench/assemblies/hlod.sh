@@ -2,7 +2,8 @@
 # Hierarchical LOD side by side (docs/benchmarks.md, "Hierarchical LOD"):
 #   bench/assemblies/hlod.sh BUILD_DIR WORK_DIR [ASSEMBLY...]   (default: demo cabinet_q cabinet plant)
 # For each assembly (the bundled demo, or one made by make_assemblies.py into WORK_DIR), in one
-# run: --hlod auto (the default), --hlod off (a node per placement) and, for the demo and
+# run: --hlod auto (the default), --hlod off (a node per placement), --hlod calls (the fewest
+# draw calls; not on the plant, whose merged file would be several GB) and, for the demo and
 # cabinet_q, --instances expand (one node for the whole model: the chain of the per-cluster
 # estimate). Prints build time and peak memory, then bench/view_error's worst error on
 # screen, triangles, drawables and, where the expanded chain exists, the ratio to the
@@ -20,7 +21,8 @@ unit_of() { [ "$1" = demo ] && echo mm || echo 0.1in; }
 
 printf "%-10s %-7s %8s %8s\n" assembly run seconds peak_MB
 for a in "${ASSEMBLIES[@]}"; do
-  runs=(auto off); { [ "$a" = demo ] || [ "$a" = cabinet_q ]; } && runs+=(expand)
+  runs=(auto off); [ "$a" = plant ] || runs+=(calls)
+  { [ "$a" = demo ] || [ "$a" = cabinet_q ]; } && runs+=(expand)
   for r in "${runs[@]}"; do
     out="$WORK/hlod/$a.$r"
     if [ "$r" = expand ]; then args=(--instances expand); else args=(--hlod "$r"); fi
