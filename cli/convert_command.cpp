@@ -305,17 +305,8 @@ void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
     std::fprintf(stderr,
                  "cadlod: hlod %s: %zu clusters of up to %zu placements (%zu per node), %zu with proxies: %zu proxy "
                  "levels, %zu triangles, merged from %zu\n",
-                 a.hlod.c_str(), h.clusters, clusterTree(a).leafItems, clusterTree(a).fanout, h.proxied, h.proxyLevels, h.proxyTriangles,
-                 h.inputTriangles);
-}
-
-// The parts, the proxies and the placements in the unit chosen: they were simplified at the
-// power of two nearest to it (vrml::UnitScaling).
-void toUnitChosen(AssemblyConversion& c, double lengthScale)
-{
-    flt::scaleLengths(c.model, lengthScale);
-    for (PartChain& part : c.parts)
-        scaleLengths(part.result, lengthScale);
+                 a.hlod.c_str(), h.clusters, clusterTree(a).leafItems, clusterTree(a).fanout, h.proxied,
+                 h.proxyLevels, h.proxyTriangles, h.inputTriangles);
 }
 
 // An assembly that shares geometry: each distinct part simplified once, placed by instances.
@@ -341,7 +332,7 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     progress::beginSpan(partsShare, 100, "");
     const HierarchyStats hierarchy = clusterPlacements(a, c, inParts, lengthScale);
     progress::endSpan();
-    toUnitChosen(c, lengthScale);
+    scaleLengths(c, lengthScale);  // to the unit chosen
     c.model.units = saving.units;
     const double lodSeconds = secondsSince(t1);
     const auto t2 = Clock::now();

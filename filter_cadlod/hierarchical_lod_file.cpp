@@ -3,10 +3,7 @@
 #include "assembly/assembly_convert.h"
 #include "assembly/hierarchical_lod.h"
 #include "assembly/progress_spans.h"
-#include "lod/scale_lengths.h"
 #include "mesh/layer_metadata.h"
-#include "openflight/atomic_file.h"
-#include "openflight/scale_lengths.h"
 #include "vrml/assembly.h"
 #include "vrml/importer.h"
 
@@ -76,17 +73,17 @@ Converted convert(const VrmlSource& source, const LodChainOptions& chain, bool f
     LodChainOptions options = chain;
     options.distanceUnit = "m";
     options.distanceScale = out.lengthScale;
+    const ProgressSpans spans = progress.spans();
     const auto build = [&](CoreMesh& mesh, LevelStore& store, double nearest) {
         CoreMesh scratch;
         const auto newLevel = [&](int) -> CoreMesh& { return store.add(); };
         return buildLodChain<CoreMesh>(mesh, scratch, proxyChainOptions(options, mesh.fn, nearest), newLevel,
-                                       progress.spans().step);
+                                       spans.step);
     };
-    PartWelding welding{source.mergeVertices, float(source.mergeTolerance / out.lengthScale)};
-    const ProgressSpans spans = progress.spans();
+    const PartWelding welding{source.mergeVertices, float(source.mergeTolerance / out.lengthScale)};
+    const int partsEnd = kReadingEnd + (kWritingStart - kReadingEnd) * kPartsShare / 100;
     {
-        ProgressSpan parts(spans, kReadingEnd, kReadingEnd + (kWritingStart - kReadingEnd) * kPartsShare / 100,
-                           "");
+        ProgressSpan parts(spans, kReadingEnd, partsEnd);
         out.conversion = convertAssembly(
             scene, name, welding, [&](CoreMesh& m, LevelStore& store) { return build(m, store, 0.0); }, true, spans);
     }
@@ -96,12 +93,10 @@ Converted convert(const VrmlSource& source, const LodChainOptions& chain, bool f
     if (fewestCalls)
         hierarchy.tree = kFewestCallsTree;
     {
-        ProgressSpan proxies(spans, kReadingEnd + (kWritingStart - kReadingEnd) * kPartsShare / 100, kWritingStart);
+        ProgressSpan proxies(spans, partsEnd, kWritingStart);
         out.hierarchy = buildHierarchy(out.conversion, hierarchy, welding, build, spans);
     }
-    flt::scaleLengths(out.conversion.model, out.lengthScale);
-    for (PartChain& part : out.conversion.parts)
-        scaleLengths(part.result, out.lengthScale);
+    scaleLengths(out.conversion, out.lengthScale);  // to the layer's unit
     return out;
 }
 

@@ -4,7 +4,9 @@
 
 #include "lod/cluster_tree.h"  // Box3
 #include "lod/lod_chain.h"
+#include "lod/scale_lengths.h"
 #include "lod/nearest_point.h"
+#include "openflight/scale_lengths.h"
 
 #include <algorithm>
 #include <cmath>
@@ -162,9 +164,9 @@ AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelN
         vrml::Geometry& geometry = scene.assembly.geometries[geometries[d]];
         const std::size_t triangles = geometry.triangleCount();
         progress.begin(int(100 * done / std::max<std::size_t>(total, 1)),
-                            int(100 * (done + triangles) / std::max<std::size_t>(total, 1)),
-                            "part " + std::to_string(d + 1) + "/" + std::to_string(geometries.size()) + " " +
-                                geometry.name);
+                       int(100 * (done + triangles) / std::max<std::size_t>(total, 1)),
+                       "part " + std::to_string(d + 1) + "/" + std::to_string(geometries.size()) + " " +
+                           geometry.name);
         out.parts.push_back(convertPart(geometry, welding, buildChain, chunkedRadius, out.model.definitions[d],
                                         out.skippedFaces, progress));
         progress.end();
@@ -176,6 +178,13 @@ AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelN
         ++out.parts[d].placements;
     }
     return out;
+}
+
+void scaleLengths(AssemblyConversion& c, double factor)
+{
+    flt::scaleLengths(c.model, factor);
+    for (PartChain& part : c.parts)
+        scaleLengths(part.result, factor);
 }
 
 }  // namespace cadlod

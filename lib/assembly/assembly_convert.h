@@ -43,4 +43,9 @@ AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelN
                                    const BuildChain& buildChain, bool chunkLargeParts = false,
                                    const ProgressSpans& progress = {});
 
+// Multiplies every length of `c` (the model, the proxies, what each part's chain says) by
+// `factor`: from the power of two the parts were simplified at to the unit chosen
+// (vrml::UnitScaling).
+void scaleLengths(AssemblyConversion& c, double factor);
+
 }  // namespace cadlod

@@ -1,11 +1,9 @@
 #include "assembly/hierarchical_lod.h"
 
-
 #include "lod/lod_chain.h"
 #include "lod/nearest_point.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -172,7 +170,9 @@ class LevelMerger {
 public:
     void add(const flt::Level& level, const flt::Mat4d& m, bool mirrored)
     {
-        const std::array<Vec3d, 3> normalMatrix = inverseTranspose(m);
+        vrml::Mat4 placement;
+        placement.m = m;
+        const vrml::Mat4 normalMatrix = placement.normalMatrix();
         for (const flt::Part& part : level.parts) {
             const auto first = std::uint32_t(out_.positions.size());
             normals_ = normals_ && part.hasNormals();
@@ -190,8 +190,7 @@ public:
                     std::swap(tri[1], tri[2]);
                 out_.triangles.push_back(tri);
             }
-            if (part.hasTriangleColors() && !part.hasVertexColors())
-                normals_ = false, faceColours_ = true;
+            faceColours_ = faceColours_ || (part.hasTriangleColors() && !part.hasVertexColors());
         }
     }
 
@@ -213,32 +212,12 @@ public:
     }
 
 private:
-    static std::array<Vec3d, 3> inverseTranspose(const flt::Mat4d& m)
+    static flt::Vec3f turned(const vrml::Mat4& normalMatrix, const flt::Vec3f& v)
     {
-        const auto a = [&](int r, int c) { return m[r][c]; };
-        const double det = a(0, 0) * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)) -
-                           a(0, 1) * (a(1, 0) * a(2, 2) - a(1, 2) * a(2, 0)) +
-                           a(0, 2) * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0));
-        const double k = det != 0 ? 1.0 / det : 0.0;
-        // The cofactors over the determinant: the inverse's transpose.
-        return {Vec3d{k * (a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1)), k * (a(1, 2) * a(2, 0) - a(1, 0) * a(2, 2)),
-                      k * (a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0))},
-                Vec3d{k * (a(0, 2) * a(2, 1) - a(0, 1) * a(2, 2)), k * (a(0, 0) * a(2, 2) - a(0, 2) * a(2, 0)),
-                      k * (a(0, 1) * a(2, 0) - a(0, 0) * a(2, 1))},
-                Vec3d{k * (a(0, 1) * a(1, 2) - a(0, 2) * a(1, 1)), k * (a(0, 2) * a(1, 0) - a(0, 0) * a(1, 2)),
-                      k * (a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0))}};
-    }
-
-    static flt::Vec3f turned(const std::array<Vec3d, 3>& n, const flt::Vec3f& v)
-    {
-        Vec3d out{};
-        for (int r = 0; r < 3; ++r)
-            out[r] = n[r][0] * v[0] + n[r][1] * v[1] + n[r][2] * v[2];
-        const double length = std::sqrt(out[0] * out[0] + out[1] * out[1] + out[2] * out[2]);
-        if (length > 0)
-            for (double& c : out)
-                c /= length;
-        return {float(out[0]), float(out[1]), float(out[2])};
+        const vrml::Vec3 n = normalMatrix.transformVector({v[0], v[1], v[2]});
+        const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+        const double k = length > 0 ? 1.0 / length : 1.0;
+        return {float(n.x * k), float(n.y * k), float(n.z * k)};
     }
 
     flt::Part out_;
@@ -337,8 +316,8 @@ private:
         gather(n, allowance, merged, inputError);
         stats_.inputTriangles += merged.triangles();
         progress_.begin(int(100 * (nodes_.size() - 1 - n) / nodes_.size()),
-                            int(100 * (nodes_.size() - n) / nodes_.size()),
-                            "proxy " + std::to_string(nodes_.size() - n) + "/" + std::to_string(nodes_.size()));
+                        int(100 * (nodes_.size() - n) / nodes_.size()),
+                        "proxy " + std::to_string(nodes_.size() - n) + "/" + std::to_string(nodes_.size()));
         // The chain's first level then lands about where the proxy can first be drawn.
         const double first = std::max(0.0, nearest - work.radius - projectedErrorDistance(inputError, options_.view));
         simplifyTogether(merged, inputError, first, work);
@@ -377,21 +356,12 @@ private:
     {
         for (std::size_t p : nodes_[m].items) {
             const flt::PartPlacement& placement = c_.model.placements[p];
-            const std::vector<flt::Level>& levels = c_.model.definitions[placement.definition].levels;
-            const double offset = distance(centre, transformed(placement.matrix, levels.front().center));
-            const std::size_t k = levelIndexAt(placement, std::max(0.0, from - offset));
-            merger.add(levels[k], placement.matrix, placement.mirrored());
-            const std::vector<LodLevel>& measured = c_.parts[placement.definition].result.levels;
-            if (k < measured.size())
-                error = std::max(error, largestScale(placement.matrix) * measured[k].hausdorffMax);
+            const flt::Level& finest = c_.model.definitions[placement.definition].levels.front();
+            const double offset = distance(centre, transformed(placement.matrix, finest.center));
+            addPlacedLevel(placement, levelIndexAt(placement, std::max(0.0, from - offset)), merger, error);
         }
         for (std::size_t child : nodes_[m].children) {
-            const ClusterWork& below = work_[child];
-            const double d = from - distance(centre, below.centre);
-            const Candidate* proxy = nullptr;
-            for (std::size_t i = 0; i < below.selected.size(); ++i)
-                if (below.from[i] <= d)
-                    proxy = &below.candidates[below.selected[i]];
+            const Candidate* proxy = drawnProxy(child, from - distance(centre, work_[child].centre));
             if (!proxy) {
                 collectAt(child, centre, from, merger, error);
                 continue;
@@ -435,11 +405,18 @@ private:
 
     double drawnAt(std::size_t n, double d) const
     {
+        const Candidate* proxy = drawnProxy(n, d);
+        return proxy ? drawCost(proxy->level) : drawnBelow(n, d);
+    }
+
+    // The proxy cluster n is drawn as from distance d to its centre; null: what it holds.
+    const Candidate* drawnProxy(std::size_t n, double d) const
+    {
         const ClusterWork& work = work_[n];
         for (std::size_t i = work.selected.size(); i-- > 0;)
             if (work.from[i] <= d)
-                return drawCost(work.candidates[work.selected[i]].level);
-        return drawnBelow(n, d);
+                return &work.candidates[work.selected[i]];
+        return nullptr;
     }
 
     const flt::Level& placedLevelAt(const flt::PartPlacement& p, double d) const
@@ -486,9 +463,17 @@ private:
         for (std::size_t k = 1; k < levels.size() && k < measured.size(); ++k)
             if (scale * measured[k].hausdorffMax <= allowance)
                 best = k;
-        merged.add(levels[best], p.matrix, p.mirrored());
-        if (best < measured.size())
-            inputError = std::max(inputError, scale * measured[best].hausdorffMax);
+        addPlacedLevel(p, best, merged, inputError);
+    }
+
+    // Level k of placement p into `sink` (MergedParts or LevelMerger), `error` raised to its.
+    template <class Sink>
+    void addPlacedLevel(const flt::PartPlacement& p, std::size_t k, Sink& sink, double& error) const
+    {
+        sink.add(c_.model.definitions[p.definition].levels[k], p.matrix, p.mirrored());
+        const std::vector<LodLevel>& measured = c_.parts[p.definition].result.levels;
+        if (k < measured.size())
+            error = std::max(error, largestScale(p.matrix) * measured[k].hausdorffMax);
     }
 
     void simplifyTogether(MergedParts& merged, double inputError, double firstDistance, ClusterWork& work)
