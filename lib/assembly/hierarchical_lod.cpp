@@ -346,7 +346,7 @@ private:
         if (merger.empty() || !merger.take("proxy", work.centre, candidate.level))
             return;
         candidate.reach = candidate.level.reachFrom(work.centre);
-        candidate.drawnFrom = switchAtNearestPoint(0.0, candidate.reach);
+        candidate.drawnFrom = from;  // where its pieces were chosen for; at least six reaches off
         work.candidates.push_back(std::move(candidate));
     }
 
