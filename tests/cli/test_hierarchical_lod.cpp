@@ -24,6 +24,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace cadlod::test {
 namespace {
@@ -288,34 +289,20 @@ LodSetResult chainFrom(CoreMesh& m, LevelStore& store, double nearest)
     return buildLodChain<CoreMesh>(m, scratch, o, [&](int) -> CoreMesh& { return store.add(); });
 }
 
-}  // namespace
-
 // Every proxy measured against the parts it replaces, at their finest: its symmetric
 // Hausdorff distance to them is within what it may show where it is switched in, one pixel
-// at the cluster's nearest point (switchAtNearestPoint), with 5 % sampling slack.
-TEST(CliHierarchicalLod, EveryProxyIsWithinItsErrorOfThePartsItReplaces)
+// at the cluster's nearest point (switchAtNearestPoint), with 5 % sampling slack. Returns
+// how many proxies were measured.
+std::size_t expectEveryProxyWithinItsError(const flt::InstancedModel& model, const ViewParams& view)
 {
-    const std::string dir = freshDirectory("hlod_proxies");
-    vrml::ImportOptions keep;
-    keep.instances = vrml::Instances::Keep;
-    vrml::ImportResult imported = vrml::importVrmlFile(writeGrid(dir), keep);
-    ASSERT_TRUE(imported.ok()) << imported.error;
-    const PartWelding settings;
-    AssemblyConversion c = convertAssembly(
-        imported.scene, "grid", settings, [](CoreMesh& m, LevelStore& store) { return chainFrom(m, store, 0); }, true);
-    HierarchyOptions options;
-    options.tree.leafItems = 16;
-    const HierarchyStats stats = buildHierarchy(c, options, settings, chainFrom);
-    ASSERT_GE(stats.proxyLevels, 2u);
-
-    const double pixelAtOne = 1.0 / projectedErrorDistance(1.0, options.view);
+    const double pixelAtOne = 1.0 / projectedErrorDistance(1.0, view);
     std::size_t measured = 0;
-    for (std::size_t n = 0; n < c.model.clusters.size(); ++n) {
-        const flt::PlacementCluster& cluster = c.model.clusters[n];
+    for (std::size_t n = 0; n < model.clusters.size(); ++n) {
+        const flt::PlacementCluster& cluster = model.clusters[n];
         if (cluster.proxies.empty())
             continue;
         CoreMesh parts;
-        addPlacedParts(c.model, n, parts);
+        addPlacedParts(model, n, parts);
         readyForMeasure(parts);
         for (const flt::Level& proxy : cluster.proxies) {
             CoreMesh drawn;
@@ -327,7 +314,45 @@ TEST(CliHierarchicalLod, EveryProxyIsWithinItsErrorOfThePartsItReplaces)
             ++measured;
         }
     }
-    EXPECT_EQ(measured, stats.proxyLevels);
+    return measured;
+}
+
+AssemblyConversion convertGrid(const std::string& dir)
+{
+    vrml::ImportOptions keep;
+    keep.instances = vrml::Instances::Keep;
+    vrml::ImportResult imported = vrml::importVrmlFile(writeGrid(dir), keep);
+    if (!imported.ok())
+        throw std::runtime_error(imported.error);
+    return convertAssembly(
+        imported.scene, "grid", PartWelding{}, [](CoreMesh& m, LevelStore& store) { return chainFrom(m, store, 0); },
+        true);
+}
+
+}  // namespace
+
+TEST(CliHierarchicalLod, EveryProxyIsWithinItsErrorOfThePartsItReplaces)
+{
+    AssemblyConversion c = convertGrid(freshDirectory("hlod_proxies"));
+    HierarchyOptions options;
+    options.tree.leafItems = 16;
+    const HierarchyStats stats = buildHierarchy(c, options, PartWelding{}, chainFrom);
+    ASSERT_GE(stats.proxyLevels, 2u);
+    EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels);
+}
+
+// The fewest-calls mode's merged proxies hold each part at a level chosen for some distance:
+// measured against the parts at their finest, each is within what it may show from where it
+// is drawn, so no part in it shows a coarser level than its own bound allows there.
+TEST(CliHierarchicalLod, EveryMergedProxyIsWithinItsErrorOfThePartsItReplaces)
+{
+    AssemblyConversion c = convertGrid(freshDirectory("hlod_merged_proxies"));
+    HierarchyOptions options;
+    options.tree = kFewestCallsTree;
+    options.fewestCalls = true;
+    const HierarchyStats stats = buildHierarchy(c, options, PartWelding{}, chainFrom);
+    ASSERT_GE(stats.proxyLevels, 100u);  // a merged proxy on most of the 127 clusters
+    EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels);
 }
 
 }  // namespace cadlod::test
