@@ -63,8 +63,6 @@ public:
         // The largest component comes last; its bucket must keep it.
         const std::size_t largestFace =
             components.empty() ? 0 : std::size_t(components.back().faces.front() - &model.face[0]);
-        bits_ = takeFeatureBits<MeshType>();
-        ownBits_ = true;
         // The gap a removal leaves is measured against the whole model, whose other pieces
         // a bucket does not hold (rest_of_model.h).
         wholeModel_.reset();
@@ -81,7 +79,7 @@ public:
                     b.ctx.modelComponentOf.push_back(wholeModel->componentOfFace(f));
         }
         forEachBucket(0, buckets_.size(), together,
-                      [&](Bucket& b) { b.ready = prepareCollapse(b.mesh, params, b.ctx, b.stats, &bits_, diagonal); });
+                      [&](Bucket& b) { b.ready = prepareCollapse(b.mesh, params, b.ctx, b.stats, diagonal); });
         return true;
     }
 
@@ -204,9 +202,6 @@ public:
                 releaseCollapse(b.mesh, b.ctx);
                 b.ready = false;
             }
-        if (ownBits_)
-            giveBackFeatureBits<MeshType>(bits_);
-        ownBits_ = false;
     }
 
 private:
@@ -288,7 +283,6 @@ private:
     std::function<MeshType&()> newMesh_;
     std::deque<Bucket> buckets_;
     std::shared_ptr<ComponentSurfaces> wholeModel_;  // the model as dealt (rest_of_model.h)
-    FeatureBits bits_;
     bool ownBits_ = false;
     bool holdBeforeFarField_ = false;  // holdToDistanceBeforeFarField
 };

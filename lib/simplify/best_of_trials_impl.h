@@ -13,24 +13,12 @@ namespace cadlod {
 
 namespace detail {
 
-// vcglib's bit flags of one mesh type, taken for a scope and given back at its end.
-template <class MeshType>
-struct TakenFeatureBits {
-    FeatureBits bits = takeFeatureBits<MeshType>();
-    TakenFeatureBits() = default;
-    TakenFeatureBits(const TakenFeatureBits&) = delete;
-    TakenFeatureBits& operator=(const TakenFeatureBits&) = delete;
-    ~TakenFeatureBits() { giveBackFeatureBits<MeshType>(bits); }
-};
-
 // The parameters of the trial kept, and the log line of all the trials in stats.weightTrials.
 template <class MeshType>
 SimplifyParams chooseWeights(MeshType& m, const SimplifyParams& params, vcg::CallBackPos* progress,
                              const RunTogether& together, SimplifyStats& stats)
 {
-    // The trials run two at a time on copies (`together`); vcglib's pool of bit flags is one
-    // per mesh type and process, so the copies share one set taken here.
-    const TakenFeatureBits<CoreMesh> trialBits;
+    // The trials run two at a time on copies (`together`).
     // Distances within the flat tolerance move no plane a viewer could see: the trials' pick
     // does not tell them apart (an exact result then wins on slivers alone).
     const double diagonal = liveDiagonal(m);
@@ -38,7 +26,7 @@ SimplifyParams chooseWeights(MeshType& m, const SimplifyParams& params, vcg::Cal
     const std::vector<WeightTrial> trials = runWeightTrials(
         m, params,
         [&](CoreMesh& copy, const SimplifyParams& p) {
-            return simplifySharing(copy, p, nullptr, runInSequence, &trialBits.bits);
+            return simplify(copy, p, nullptr, runInSequence);
         },
         progress, together, distanceFloor);
     const std::size_t best = keptTrial(trials, distanceFloor);
@@ -58,7 +46,7 @@ SimplifyStats bestOfTrials(MeshType& m, const SimplifyParams& params, vcg::CallB
         return stats;
     const SimplifyParams chosen =
         weightTrialsApply(m, params) ? detail::chooseWeights(m, params, progress, together, stats) : params;
-    return simplifyWith(m, chosen, stats, start, progress, together, nullptr);
+    return simplifyWith(m, chosen, stats, start, progress, together);
 }
 
 }  // namespace cadlod

@@ -47,7 +47,6 @@ struct CollapseContext : public vcg::BaseParameterClass {
 
     SimplifyParams params;
     FeatureBits bits;
-    bool ownsBits = true;         // bits taken by this session (not shared with others)
     // The per-vertex and per-face arrays of the mesh, one set for every session on it: a
     // copy of a context is a second session on the same mesh (collapse_halves.h), and the
     // two write the entries of different vertices and faces only.

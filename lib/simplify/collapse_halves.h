@@ -199,7 +199,6 @@ struct HalfSession {
         ctx.heap = &heap;
         ctx.faceCounter = &liveFaces;
         ctx.vertexCounter = &deletedVertices;
-        ctx.ownsBits = false;
         ctx.largestError = 0.0;
         ctx.largestFeatureBreak = 0.0;
         ctx.facingGaveWay = false;

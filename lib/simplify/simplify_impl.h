@@ -166,44 +166,38 @@ bool simplifierRequirementsMet(const MeshType& m)
            vcg::tri::HasPerVertexMark(m);
 }
 
-// The bit flags a simplification needs, taken from vcglib's per-type pool (a process-wide
-// stack: take and give back in order, from one thread). Sessions on different meshes may
-// share one set.
+// The bit flags a simplification needs, taken from vcglib's per-type pool once for the
+// process and kept: that pool is a stack, to be taken from and given back in order by one
+// thread, and simplifications run at once on several threads (an assembly's parts). Each
+// marks only its own mesh, so all share the one set.
 template <class MeshType>
-FeatureBits takeFeatureBits()
+const FeatureBits& featureBits()
 {
-    FeatureBits bits;
-    for (int j = 0; j < 3; ++j)
-        bits.edge[j] = MeshType::FaceType::NewBitFlag();
-    bits.locked = MeshType::VertexType::NewBitFlag();
-    bits.boundary = MeshType::VertexType::NewBitFlag();
+    static const FeatureBits bits = [] {
+        FeatureBits taken;
+        for (int j = 0; j < 3; ++j)
+            taken.edge[j] = MeshType::FaceType::NewBitFlag();
+        taken.locked = MeshType::VertexType::NewBitFlag();
+        taken.boundary = MeshType::VertexType::NewBitFlag();
+        return taken;
+    }();
     return bits;
 }
 
-template <class MeshType>
-void giveBackFeatureBits(const FeatureBits& bits)
-{
-    MeshType::VertexType::DeleteBitFlag(bits.boundary);
-    MeshType::VertexType::DeleteBitFlag(bits.locked);
-    for (int j = 2; j >= 0; --j)
-        MeshType::FaceType::DeleteBitFlag(bits.edge[j]);
-}
-
 // Sets up a simplification of `m`: feature and boundary marks, quadrics, input normals,
-// the bit flags they need (`sharedBits`, or a set of its own). False if the mesh has no
+// the bit flags they need (featureBits). False if the mesh has no
 // extent (stats.diagonal 0). `modelDiagonal` > 0: `m` is a piece of a model that size,
 // whose priorities and logged sizes it must share. Every prepareCollapse needs a
 // releaseCollapse, which gives back bit flags of its own.
 template <class MeshType>
 bool prepareCollapse(MeshType& m, const SimplifyParams& params, CollapseContext<MeshType>& ctx, SimplifyStats& stats,
-                     const FeatureBits* sharedBits = nullptr, double modelDiagonal = 0.0)
+                     double modelDiagonal = 0.0)
 {
     using FaceType = typename MeshType::FaceType;
     using VertexType = typename MeshType::VertexType;
     ctx.params = params;
     ctx.stats = &stats;
-    ctx.ownsBits = sharedBits == nullptr;
-    ctx.bits = sharedBits ? *sharedBits : takeFeatureBits<MeshType>();
+    ctx.bits = featureBits<MeshType>();
     ctx.mark = 0;
     for (VertexType& v : m.vert) {
         v.ClearUserBit(ctx.bits.locked);
@@ -289,8 +283,6 @@ void releaseCollapse(MeshType& m, CollapseContext<MeshType>& ctx)
         v.ClearUserBit(ctx.bits.locked);
         v.ClearUserBit(ctx.bits.boundary);
     }
-    if (ctx.ownsBits)
-        giveBackFeatureBits<MeshType>(ctx.bits);
 }
 
 namespace detail {
@@ -420,7 +412,7 @@ void collapseToTarget(MeshType& m, CollapseContext<MeshType>& ctx, SimplifyStats
 template <class MeshType>
 SimplifyStats simplifyWith(MeshType& m, const SimplifyParams& params, SimplifyStats stats,
                            std::chrono::steady_clock::time_point start, vcg::CallBackPos* progress,
-                           const RunTogether& together, const FeatureBits* sharedBits);
+                           const RunTogether& together);
 
 namespace detail {
 
@@ -452,39 +444,31 @@ bool readyToSimplify(const MeshType& m, const SimplifyParams& params, SimplifySt
     return true;
 }
 
-// simplify(), its collapses marking features with `sharedBits` (null: bits of its own).
-template <class MeshType>
-SimplifyStats simplifySharing(MeshType& m, const SimplifyParams& params, vcg::CallBackPos* progress,
-                              const RunTogether& together, const FeatureBits* sharedBits)
-{
-    const auto start = std::chrono::steady_clock::now();
-    SimplifyStats stats;
-    if (!readyToSimplify(m, params, stats))
-        return stats;
-    return simplifyWith(m, params, stats, start, progress, together, sharedBits);
-}
-
 }  // namespace detail
 
 template <class MeshType>
 SimplifyStats simplify(MeshType& m, const SimplifyParams& params, vcg::CallBackPos* progress,
                        const RunTogether& together)
 {
-    return detail::simplifySharing(m, params, progress, together, nullptr);
+    const auto start = std::chrono::steady_clock::now();
+    SimplifyStats stats;
+    if (!detail::readyToSimplify(m, params, stats))
+        return stats;
+    return simplifyWith(m, params, stats, start, progress, together);
 }
 
 // simplify() once the plane weight is chosen.
 template <class MeshType>
 SimplifyStats simplifyWith(MeshType& m, const SimplifyParams& params, SimplifyStats stats,
                            std::chrono::steady_clock::time_point start, vcg::CallBackPos* progress,
-                           const RunTogether& together, const FeatureBits* sharedBits)
+                           const RunTogether& together)
 {
     using VertexType = typename MeshType::VertexType;
     // An edge of three faces or more would hold its vertices for good (feature_edges.h), and
     // a target would be reached by removing whole parts instead: it is cut apart first.
     cutNonManifoldEdges(m, params, stats);
     CollapseContext<MeshType> ctx;
-    if (prepareCollapse(m, params, ctx, stats, sharedBits)) {
+    if (prepareCollapse(m, params, ctx, stats)) {
         std::vector<VertexType*> frozen;
         if (params.selectedOnly)
             frozen = detail::freezeUnselected(m);
