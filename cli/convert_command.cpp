@@ -96,8 +96,9 @@ ProgressSpans barSpans()
 }
 
 // `lengthScale` turns the mesh's lengths into metres, for the progress to name distances in.
+// `progress`: null where the chain runs beside others (an assembly's parts and proxies).
 LodSetResult buildLevels(const ConvertArgs& a, double lengthScale, CoreMesh& original, LevelStore& store,
-                         double nearestDistance = 0.0)
+                         vcg::CallBackPos* progress, double nearestDistance = 0.0)
 {
     const auto newLevel = [&](int) -> CoreMesh& { return store.add(); };
     if (a.lod == "auto") {
@@ -113,7 +114,7 @@ LodSetResult buildLevels(const ConvertArgs& a, double lengthScale, CoreMesh& ori
         o.distanceScale = lengthScale;
         o = proxyChainOptions(o, original.fn, nearestDistance);
         CoreMesh scratch;
-        return buildLodChain<CoreMesh>(original, scratch, o, newLevel, progress::callback);
+        return buildLodChain<CoreMesh>(original, scratch, o, newLevel, progress);
     }
     LodSetOptions o;
     o.levels = a.lod;
@@ -122,7 +123,7 @@ LodSetResult buildLevels(const ConvertArgs& a, double lengthScale, CoreMesh& ori
     o.runTogether = runOnWorkers;
     o.hausdorffSamples = a.samples;
     applyProtection(a.protection, o.simplify);
-    return buildLodSet<CoreMesh>(original, o, newLevel, progress::callback);
+    return buildLodSet<CoreMesh>(original, o, newLevel, progress);
 }
 
 nlohmann::json optionsJson(const ConvertArgs& a, const LoadedMesh& loaded)
@@ -277,8 +278,8 @@ HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, co
     options.tree = clusterTree(a);
     options.view = viewOf(a);
     options.fewestCalls = a.hlod == "calls";
-    const auto chain = [&](CoreMesh& merged, LevelStore& store, double nearest) {
-        return buildLevels(a, lengthScale, merged, store, nearest);
+    const auto chain = [&](CoreMesh& merged, LevelStore& store, double nearest, vcg::CallBackPos* progress) {
+        return buildLevels(a, lengthScale, merged, store, progress, nearest);
     };
     return buildHierarchy(c, options, weldingOf(importing), chain, barSpans());
 }
@@ -323,8 +324,8 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     progress::phase(kReadingEnd, kWritingStart, "LOD chain");
     const int partsShare = hierarchical(a) && loaded.placements > 1 ? kPartsShareBeforeProxies : 100;
     progress::beginSpan(0, partsShare, "");
-    const auto chain = [&](CoreMesh& original, LevelStore& store) {
-        return buildLevels(a, lengthScale, original, store);
+    const auto chain = [&](CoreMesh& original, LevelStore& store, vcg::CallBackPos* progress) {
+        return buildLevels(a, lengthScale, original, store, progress);
     };
     AssemblyConversion c =
         convertAssembly(scene, baseName(a.output), weldingOf(inParts), chain, hierarchical(a), barSpans());
@@ -395,7 +396,7 @@ void runConvert(const ConvertArgs& a)
     const auto t1 = Clock::now();
     progress::phase(kReadingEnd, kWritingStart, "LOD chain");
     LevelStore store;
-    LodSetResult result = buildLevels(a, loaded.lengthScale, original, store);
+    LodSetResult result = buildLevels(a, loaded.lengthScale, original, store, progress::callback);
     if (!result.ok())
         throw InputError(a.input + ": " + result.error);
     const double lodSeconds = secondsSince(t1);

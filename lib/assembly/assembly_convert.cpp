@@ -1,5 +1,7 @@
 #include "assembly/assembly_convert.h"
 
+#include "assembly/parallel_tasks.h"
+
 #include "assembly/part_chunks.h"
 
 #include "lod/cluster_tree.h"  // Box3
@@ -125,7 +127,7 @@ PartChain convertPart(vrml::Geometry& geometry, const PartWelding& welding, cons
     LevelStore store;
     {
         ProgressSpan span(progress, kWeldingShare, 100);
-        chain.result = buildChain(original, store);
+        chain.result = buildChain(original, store, progress.step);
     }
     if (!chain.result.ok())
         throw std::runtime_error("part " + geometry.name + ": " + chain.result.error);
@@ -157,21 +159,28 @@ AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelN
     out.model.definitions.resize(geometries.size());
     const double chunkedRadius = chunkLargeParts ? kChunkedPartShare * placedBox(scene.assembly, placements).halfDiagonal()
                                                  : std::numeric_limits<double>::infinity();
-    std::size_t done = 0, total = 0;
-    for (std::size_t g : geometries)
+    std::size_t total = 0;
+    std::vector<std::size_t> before;  // the triangles of the parts before each
+    for (std::size_t g : geometries) {
+        before.push_back(total);
         total += scene.assembly.geometries[g].triangleCount();
-    for (std::size_t d = 0; d < geometries.size(); ++d) {
-        vrml::Geometry& geometry = scene.assembly.geometries[geometries[d]];
-        const std::size_t triangles = geometry.triangleCount();
-        progress.begin(int(100 * done / std::max<std::size_t>(total, 1)),
-                       int(100 * (done + triangles) / std::max<std::size_t>(total, 1)),
-                       "part " + std::to_string(d + 1) + "/" + std::to_string(geometries.size()) + " " +
-                           geometry.name);
-        out.parts.push_back(convertPart(geometry, welding, buildChain, chunkedRadius, out.model.definitions[d],
-                                        out.skippedFaces, progress));
-        progress.end();
-        done += triangles;
     }
+    const auto percent = [&](std::size_t triangles) { return int(100 * triangles / std::max<std::size_t>(total, 1)); };
+    out.parts.resize(geometries.size());
+    std::vector<std::size_t> skipped(geometries.size(), 0);
+    runTasks(
+        geometries.size(),
+        [&](std::size_t d, const ProgressSpans& progress) {
+            vrml::Geometry& geometry = scene.assembly.geometries[geometries[d]];
+            ProgressSpan span(progress, percent(before[d]), percent(before[d] + geometry.triangleCount()),
+                              "part " + std::to_string(d + 1) + "/" + std::to_string(geometries.size()) + " " +
+                                  geometry.name);
+            out.parts[d] = convertPart(geometry, welding, buildChain, chunkedRadius, out.model.definitions[d],
+                                       skipped[d], progress);
+        },
+        progress);
+    for (std::size_t s : skipped)
+        out.skippedFaces += s;
     for (const vrml::Placement& p : placements) {
         const std::size_t d = definitionOf.at(p.geometry);
         out.model.placements.push_back({p.path, toFlt(p.matrix), d});

@@ -18,8 +18,9 @@
 
 namespace cadlod {
 
-// The chain of one part: `original` is ready for the simplifier, the levels go to `store`.
-using BuildChain = std::function<LodSetResult(CoreMesh& original, LevelStore& store)>;
+// The chain of one part: `original` is ready for the simplifier, the levels go to `store`,
+// its steps to `progress` (null: none; several chains may run at once, parallel_tasks.h).
+using BuildChain = std::function<LodSetResult(CoreMesh& original, LevelStore& store, vcg::CallBackPos* progress)>;
 
 struct PartChain {
     std::string name;
@@ -37,7 +38,8 @@ struct AssemblyConversion {
 };
 
 // `modelName` names the model (its header and root group). `chunkLargeParts`: a part large
-// in the assembly is written in chunks (part_chunks.h). Each part is a span of `progress`.
+// in the assembly is written in chunks (part_chunks.h). The parts' chains run at once
+// (parallel_tasks.h); each is a span of `progress`.
 // Throws std::runtime_error when a part cannot be converted (its name in the message).
 AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelName, const PartWelding& welding,
                                    const BuildChain& buildChain, bool chunkLargeParts = false,

@@ -1,5 +1,7 @@
 #include "assembly/hierarchical_lod.h"
 
+#include "assembly/parallel_tasks.h"
+
 #include "lod/lod_chain.h"
 #include "lod/nearest_point.h"
 
@@ -61,6 +63,7 @@ struct ClusterWork {
     // The candidates worth drawing, and from which distance to the centre each is drawn.
     std::vector<std::size_t> selected;
     std::vector<double> from;
+    std::size_t mergedTriangles = 0;  // the simplified proxies' input
 };
 
 // The colour triangle t is drawn with: its vertices' where they carry one (all three alike,
@@ -264,8 +267,7 @@ public:
             boxes.push_back(placedBox(c_.model.definitions[p.definition].levels.front(), p.matrix));
         nodes_ = buildClusterTree(boxes, options_.tree);
         work_.resize(nodes_.size());
-        for (std::size_t n = nodes_.size(); n-- > 0;)  // children first
-            makeProxies(n);
+        makeProxiesChildrenFirst();
         c_.model.clusters.resize(nodes_.size());
         if (!nodes_.empty())
             placeCluster(0, kNeverCulled, "cluster 1");
@@ -293,7 +295,31 @@ private:
         return switchAtNearestPoint(projectedErrorDistance(error, options_.view), reach);
     }
 
-    void makeProxies(std::size_t n)
+    // A cluster's proxies are made from its children's: the clusters of one height (the
+    // longest way down to a leaf) are made at once, the lowest first.
+    void makeProxiesChildrenFirst()
+    {
+        std::vector<std::size_t> height(nodes_.size(), 0);
+        for (std::size_t n = nodes_.size(); n-- > 0;)  // a child's index is above its parent's
+            for (std::size_t child : nodes_[n].children)
+                height[n] = std::max(height[n], height[child] + 1);
+        std::vector<std::vector<std::size_t>> byHeight(nodes_.empty() ? 0 : height.front() + 1);
+        for (std::size_t n = nodes_.size(); n-- > 0;)
+            byHeight[height[n]].push_back(n);
+        std::size_t before = 0;
+        for (const std::vector<std::size_t>& same : byHeight) {
+            runTasks(
+                same.size(),
+                [&](std::size_t i, const ProgressSpans& progress) { makeProxies(same[i], before + i, progress); },
+                progress_);
+            before += same.size();
+        }
+        for (const ClusterWork& work : work_)
+            stats_.inputTriangles += work.mergedTriangles;
+    }
+
+    // Cluster n's proxy candidates, the `order`-th cluster made.
+    void makeProxies(std::size_t n, std::size_t order, const ProgressSpans& progress)
     {
         const ClusterNode& node = nodes_[n];
         ClusterWork& work = work_[n];
@@ -314,14 +340,15 @@ private:
         MergedParts merged(work.centre);
         double inputError = 0;
         gather(n, allowance, merged, inputError);
-        stats_.inputTriangles += merged.triangles();
-        progress_.begin(int(100 * (nodes_.size() - 1 - n) / nodes_.size()),
-                        int(100 * (nodes_.size() - n) / nodes_.size()),
-                        "proxy " + std::to_string(nodes_.size() - n) + "/" + std::to_string(nodes_.size()));
-        // The chain's first level then lands about where the proxy can first be drawn.
-        const double first = std::max(0.0, nearest - work.radius - projectedErrorDistance(inputError, options_.view));
-        simplifyTogether(merged, inputError, first, work);
-        progress_.end();
+        work.mergedTriangles = merged.triangles();
+        {
+            ProgressSpan span(progress, int(100 * order / nodes_.size()), int(100 * (order + 1) / nodes_.size()),
+                              "proxy " + std::to_string(order + 1) + "/" + std::to_string(nodes_.size()));
+            // The chain's first level then lands about where the proxy can first be drawn.
+            const double first =
+                std::max(0.0, nearest - work.radius - projectedErrorDistance(inputError, options_.view));
+            simplifyTogether(merged, inputError, first, work, progress);
+        }
         select(n);
     }
 
@@ -476,20 +503,21 @@ private:
             error = std::max(error, largestScale(p.matrix) * measured[k].hausdorffMax);
     }
 
-    void simplifyTogether(MergedParts& merged, double inputError, double firstDistance, ClusterWork& work)
+    void simplifyTogether(MergedParts& merged, double inputError, double firstDistance, ClusterWork& work,
+                          const ProgressSpans& progress)
     {
         if (merged.triangles() == 0)
             return;
         CoreMesh mesh;
         {
-            ProgressSpan welding(progress_, 0, kWeldingShare);
-            partToMesh(merged.take(), "cluster", mesh, welding_, progress_.step);
+            ProgressSpan welding(progress, 0, kWeldingShare);
+            partToMesh(merged.take(), "cluster", mesh, welding_, progress.step);
         }
         LevelStore store;
         LodSetResult result;
         {
-            ProgressSpan chain(progress_, kWeldingShare, 100);
-            result = buildProxyChain_(mesh, store, firstDistance);
+            ProgressSpan chain(progress, kWeldingShare, 100);
+            result = buildProxyChain_(mesh, store, firstDistance, progress.step);
         }
         if (!result.ok())
             throw std::runtime_error("a cluster proxy: " + result.error);

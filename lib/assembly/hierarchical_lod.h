@@ -24,8 +24,10 @@
 
 namespace cadlod {
 
-// The chain of a cluster's merged parts, planned from `nearestDistance` on.
-using BuildProxyChain = std::function<LodSetResult(CoreMesh& merged, LevelStore& store, double nearestDistance)>;
+// The chain of a cluster's merged parts, planned from `nearestDistance` on, its steps to
+// `progress` (null: none; several chains may run at once, parallel_tasks.h).
+using BuildProxyChain = std::function<LodSetResult(CoreMesh& merged, LevelStore& store, double nearestDistance,
+                                                   vcg::CallBackPos* progress)>;
 
 struct HierarchyOptions {
     ClusterTreeOptions tree;
@@ -69,6 +71,7 @@ struct HierarchyStats {
 };
 
 // Puts c.model's placements into clusters with proxies, each proxy a span of `progress`.
+// The proxies of the clusters of one height are made at once (parallel_tasks.h).
 // Throws std::runtime_error when a proxy cannot be built.
 HierarchyStats buildHierarchy(AssemblyConversion& c, const HierarchyOptions& options, const PartWelding& welding,
                               const BuildProxyChain& buildProxyChain, const ProgressSpans& progress = {});

@@ -240,6 +240,49 @@ TEST(CliHierarchicalLod, AFileThatSharesNothingIsClusteredByItsParts)
     EXPECT_EQ(one.at("output").at("lodNodes"), one.at("levels").size());  // one chain: a record per level
 }
 
+// The bytes of an OpenFlight file after its header record (which holds the date it was written).
+std::string afterHeader(const std::string& path)
+{
+    const std::string bytes = readFile(path);
+    if (bytes.size() < 4)
+        return {};
+    const std::size_t length = (std::size_t((unsigned char)bytes[2]) << 8) | (unsigned char)bytes[3];
+    return bytes.substr(std::min(length, bytes.size()));
+}
+
+// The parts' chains and the clusters' proxies run at once on several threads; what they make
+// does not depend on how many, nor on which ran first: the same file and the same chains as
+// on one thread. 32 distinct parts with creases, so that the simplifications overlap.
+TEST(CliHierarchicalLod, TheSameFileOnOneThreadOrTwo)
+{
+    const std::string dir = freshDirectory("hlod_threads");
+    const std::string input = writeUnsharedGrid(dir);
+    for (const char* threads : {"1", "2"}) {
+        const std::string name = freshDirectory(std::string("hlod_threads/on") + threads) + "/assembly";  // one name
+        const CliRun run = runCadlod({"convert", input, "-o", name + ".flt", "--cluster-parts", "4", "--threads",
+                                      threads, "--report", name + ".json"});
+        ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    }
+    const std::string one = afterHeader(dir + "/on1/assembly.flt"), two = afterHeader(dir + "/on2/assembly.flt");
+    ASSERT_GT(one.size(), 1000u);
+    EXPECT_TRUE(one == two) << one.size() << " bytes on one thread, " << two.size() << " on two";
+    const nlohmann::json parts1 = nlohmann::json::parse(readFile(dir + "/on1/assembly.json")).at("parts");
+    const nlohmann::json parts2 = nlohmann::json::parse(readFile(dir + "/on2/assembly.json")).at("parts");
+    ASSERT_EQ(parts1.size(), 32u);
+    ASSERT_EQ(parts2.size(), 32u);
+    int featureBreaks = 0;
+    for (std::size_t p = 0; p < parts1.size(); ++p) {
+        const nlohmann::json &levels1 = parts1[p].at("levels"), &levels2 = parts2[p].at("levels");
+        ASSERT_EQ(levels1.size(), levels2.size()) << parts1[p].at("name");
+        for (std::size_t k = 1; k < levels1.size(); ++k) {
+            const nlohmann::json &a = levels1[k].at("simplification"), &b = levels2[k].at("simplification");
+            EXPECT_EQ(a.at("featureBreaks"), b.at("featureBreaks")) << parts1[p].at("name") << " level " << k;
+            featureBreaks += a.at("featureBreaks").get<int>();
+        }
+    }
+    EXPECT_GT(featureBreaks, 0);  // the creases were marked, on every thread
+}
+
 }  // namespace cadlod::test
 
 namespace cadlod::test {
@@ -281,7 +324,7 @@ void readyForMeasure(CoreMesh& m)
     vcg::tri::UpdateBounding<CoreMesh>::Box(m);
 }
 
-LodSetResult chainFrom(CoreMesh& m, LevelStore& store, double nearest)
+LodSetResult chainFrom(CoreMesh& m, LevelStore& store, double nearest, vcg::CallBackPos* = nullptr)
 {
     LodChainOptions o;
     o.nearestDistance = nearest;
@@ -325,8 +368,8 @@ AssemblyConversion convertGrid(const std::string& dir)
     if (!imported.ok())
         throw std::runtime_error(imported.error);
     return convertAssembly(
-        imported.scene, "grid", PartWelding{}, [](CoreMesh& m, LevelStore& store) { return chainFrom(m, store, 0); },
-        true);
+        imported.scene, "grid", PartWelding{},
+        [](CoreMesh& m, LevelStore& store, vcg::CallBackPos*) { return chainFrom(m, store, 0); }, true);
 }
 
 }  // namespace
