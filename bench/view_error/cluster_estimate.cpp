@@ -145,6 +145,7 @@ ClusterGrid::ClusterGrid(const ReferenceChain& chain, const osg::BoundingBox& bo
     : chain_(chain), lo_(box.xMin(), box.yMin(), box.zMin())
 {
     size_ = osg::Vec3d(box.xMax(), box.yMax(), box.zMax()) - lo_;
+    cellRadius_ = 0.5 * size_.length() / kCells;
     for (const osg::Vec3f& c : chain.finestCentroids)
         ++triangles_[cellIndex(c)];
     total_ = chain.finestCentroids.size();
@@ -171,6 +172,30 @@ double ClusterGrid::distanceToCell(const osg::Vec3d& eye, int cell) const
         squared += gap * gap;
     }
     return std::sqrt(squared);
+}
+
+double ClusterGrid::distanceToCentre(const osg::Vec3d& eye, int cell) const
+{
+    const int along[3] = {cell % kCells, cell / kCells % kCells, cell / (kCells * kCells)};
+    osg::Vec3d centre;
+    for (int axis = 0; axis < 3; ++axis)
+        centre[axis] = lo_[axis] + size_[axis] / kCells * (along[axis] + 0.5);
+    return (centre - eye).length();
+}
+
+double ClusterGrid::nodeShare(const osg::Vec3d& eye) const
+{
+    if (total_ == 0)
+        return 0;
+    double drawn = 0;
+    for (int cell = 0; cell < int(triangles_.size()); ++cell) {
+        if (triangles_[cell] == 0)
+            continue;
+        // A level whose error is 1 px at s may be drawn from max(s + r, 6 r) off the centre.
+        const double d = distanceToCentre(eye, cell);
+        drawn += double(triangles_[cell]) * (d >= 6 * cellRadius_ ? chain_.shareAt(d - cellRadius_) : 1.0);
+    }
+    return drawn / double(total_);
 }
 
 double ClusterGrid::share(const osg::Vec3d& eye) const

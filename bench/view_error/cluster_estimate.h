@@ -1,6 +1,9 @@
 // The per-cluster estimate of design.md §8: level 0 of a reference chain split into a grid of
 // clusters over the measured model's box, each cluster drawn at the share of level 0 the
-// chain keeps at the distance from the eye to the cluster's box.
+// chain keeps at the distance from the eye to the cluster's box. Beside it, the same grid as
+// LOD nodes: each cell switched by the distance to its centre, as OSG does, and a level shown
+// only where the bound of §8 holds at the cell's nearest point (from six radii off and its
+// error's distance plus a radius): what the finest hierarchy of cell-sized nodes could draw.
 #pragma once
 
 #include <osg/BoundingBox>
@@ -38,13 +41,17 @@ public:
 
     // The triangles the clusters draw from this eye, as a share of level 0.
     double share(const osg::Vec3d& eye) const;
+    // The same, each cell an LOD node.
+    double nodeShare(const osg::Vec3d& eye) const;
 
 private:
     int cellIndex(const osg::Vec3f& point) const;
     double distanceToCell(const osg::Vec3d& eye, int cell) const;
+    double distanceToCentre(const osg::Vec3d& eye, int cell) const;
 
     const ReferenceChain& chain_;
     osg::Vec3d lo_, size_;
+    double cellRadius_ = 0;
     std::array<std::size_t, kCells * kCells * kCells> triangles_{};
     std::size_t total_ = 0;
 };

@@ -9,7 +9,7 @@
 // s). Prints per path the worst and mean worst error, the triangles drawn as a share of level
 // 0 and the drawables (mean, most, and of them the cluster proxies); with --estimate REF, also
 // the share the per-cluster estimate of REF's chain draws (cluster_estimate.h) and the ratio
-// of the two; with --walk-csv, every walk point's figures; with --box, the paths are laid in
+// of the two, and the same for the estimate's cells as LOD nodes; with --walk-csv, every walk point's figures; with --box, the paths are laid in
 // that box rather than the model's own.
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
@@ -110,7 +110,8 @@ private:
 };
 
 struct PathTotals {
-    double worst = 0, meanWorst = 0, share = 0, drawables = 0, mostDrawables = 0, proxyDrawables = 0, estimate = 0;
+    double worst = 0, meanWorst = 0, share = 0, drawables = 0, mostDrawables = 0, proxyDrawables = 0, estimate = 0,
+           nodeEstimate = 0;
 };
 
 struct Model {
@@ -135,6 +136,7 @@ PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
         totals.mostDrawables = std::max(totals.mostDrawables, double(f.drawables));
         totals.proxyDrawables += double(f.proxyDrawables);
         totals.estimate += estimate;
+        totals.nodeEstimate += model.clusters ? model.clusters->nodeShare(eye) : 0;
         if (walkCsv)
             walkCsv->row(model.file, i, eye, share, f, model.clusters ? &estimate : nullptr);
     }
@@ -149,8 +151,9 @@ void printPath(const Model& model, const Path& path, const PathTotals& totals)
                 model.file.c_str(), path.name, totals.worst, totals.meanWorst / n, totals.share / n,
                 totals.drawables / n, totals.mostDrawables, totals.proxyDrawables / n);
     if (model.clusters)
-        std::printf(" estimate_share %.4f ratio_to_estimate %.4f", totals.estimate / n,
-                    totals.estimate > 0 ? totals.share / totals.estimate : 0.0);
+        std::printf(" estimate_share %.4f ratio_to_estimate %.4f node_estimate_share %.4f ratio_to_node_estimate %.4f",
+                    totals.estimate / n, totals.estimate > 0 ? totals.share / totals.estimate : 0.0,
+                    totals.nodeEstimate / n, totals.nodeEstimate > 0 ? totals.share / totals.nodeEstimate : 0.0);
     std::printf("\n");
 }
 
