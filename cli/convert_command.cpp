@@ -98,7 +98,7 @@ ProgressSpans barSpans()
 // `lengthScale` turns the mesh's lengths into metres, for the progress to name distances in.
 // `progress`: null where the chain runs beside others (an assembly's parts and proxies).
 LodSetResult buildLevels(const ConvertArgs& a, double lengthScale, CoreMesh& original, LevelStore& store,
-                         vcg::CallBackPos* progress, double nearestDistance = 0.0)
+                         vcg::CallBackPos* progress, const ProxyRange& range = {})
 {
     const auto newLevel = [&](int) -> CoreMesh& { return store.add(); };
     if (a.lod == "auto") {
@@ -112,7 +112,7 @@ LodSetResult buildLevels(const ConvertArgs& a, double lengthScale, CoreMesh& ori
         o.runTogether = runOnWorkers;
         o.distanceUnit = "m";
         o.distanceScale = lengthScale;
-        o = proxyChainOptions(o, original.fn, nearestDistance);
+        o = proxyChainOptions(o, original.fn, range);
         CoreMesh scratch;
         return buildLodChain<CoreMesh>(original, scratch, o, newLevel, progress);
     }
@@ -278,8 +278,8 @@ HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, co
     options.tree = clusterTree(a);
     options.view = viewOf(a);
     options.fewestCalls = a.hlod == "calls";
-    const auto chain = [&](CoreMesh& merged, LevelStore& store, double nearest, vcg::CallBackPos* progress) {
-        return buildLevels(a, lengthScale, merged, store, progress, nearest);
+    const auto chain = [&](CoreMesh& merged, LevelStore& store, const ProxyRange& range, vcg::CallBackPos* progress) {
+        return buildLevels(a, lengthScale, merged, store, progress, range);
     };
     return buildHierarchy(c, options, weldingOf(importing), chain, barSpans());
 }

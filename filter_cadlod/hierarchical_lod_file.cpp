@@ -74,10 +74,10 @@ Converted convert(const VrmlSource& source, const LodChainOptions& chain, bool f
     options.distanceUnit = "m";
     options.distanceScale = out.lengthScale;
     const ProgressSpans spans = progress.spans();
-    const auto build = [&](CoreMesh& mesh, LevelStore& store, double nearest, vcg::CallBackPos* step) {
+    const auto build = [&](CoreMesh& mesh, LevelStore& store, const ProxyRange& range, vcg::CallBackPos* step) {
         CoreMesh scratch;
         const auto newLevel = [&](int) -> CoreMesh& { return store.add(); };
-        return buildLodChain<CoreMesh>(mesh, scratch, proxyChainOptions(options, mesh.fn, nearest), newLevel, step);
+        return buildLodChain<CoreMesh>(mesh, scratch, proxyChainOptions(options, mesh.fn, range), newLevel, step);
     };
     const PartWelding welding{source.mergeVertices, float(source.mergeTolerance / out.lengthScale)};
     const int partsEnd = kReadingEnd + (kWritingStart - kReadingEnd) * kPartsShare / 100;
@@ -85,7 +85,7 @@ Converted convert(const VrmlSource& source, const LodChainOptions& chain, bool f
         ProgressSpan parts(spans, kReadingEnd, partsEnd);
         out.conversion = convertAssembly(
             scene, name, welding,
-            [&](CoreMesh& m, LevelStore& store, vcg::CallBackPos* step) { return build(m, store, 0.0, step); }, true,
+            [&](CoreMesh& m, LevelStore& store, vcg::CallBackPos* step) { return build(m, store, {}, step); }, true,
             spans);
     }
     HierarchyOptions hierarchy;

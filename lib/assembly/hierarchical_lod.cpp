@@ -267,6 +267,10 @@ public:
             boxes.push_back(placedBox(c_.model.definitions[p.definition].levels.front(), p.matrix));
         nodes_ = buildClusterTree(boxes, options_.tree);
         work_.resize(nodes_.size());
+        parent_.assign(nodes_.size(), 0);
+        for (std::size_t n = 0; n < nodes_.size(); ++n)
+            for (std::size_t child : nodes_[n].children)
+                parent_[child] = n;
         makeProxiesChildrenFirst();
         c_.model.clusters.resize(nodes_.size());
         if (!nodes_.empty())
@@ -347,9 +351,23 @@ private:
             // The chain's first level then lands about where the proxy can first be drawn.
             const double first =
                 std::max(0.0, nearest - work.radius - projectedErrorDistance(inputError, options_.view));
-            simplifyTogether(merged, inputError, first, work, progress);
+            simplifyTogether(merged, inputError, {first, farthestDrawn(n, inputError, first)}, work, progress);
         }
         select(n);
+    }
+
+    // Past where its parent's proxy has surely taken over, cluster n's proxy is never drawn,
+    // and its chain stops there: as a distance at which the proxy's own error is one pixel,
+    // like `first`. The root's chain goes on to the far field (0).
+    double farthestDrawn(std::size_t n, double inputError, double first) const
+    {
+        if (n == 0)
+            return 0.0;
+        const Box3& parent = nodes_[parent_[n]].box;
+        const double takeOver = kParentTakeOverMargin * switchAtNearestPoint(0.0, parent.halfDiagonal()) +
+                                distance(parent.center(), work_[n].centre);
+        const double farthest = takeOver - work_[n].radius - projectedErrorDistance(inputError, options_.view);
+        return std::max(farthest, kParentTakeOverMargin * first);
     }
 
     std::size_t placementsBelow(std::size_t n) const
@@ -503,7 +521,7 @@ private:
             error = std::max(error, largestScale(p.matrix) * measured[k].hausdorffMax);
     }
 
-    void simplifyTogether(MergedParts& merged, double inputError, double firstDistance, ClusterWork& work,
+    void simplifyTogether(MergedParts& merged, double inputError, const ProxyRange& range, ClusterWork& work,
                           const ProgressSpans& progress)
     {
         if (merged.triangles() == 0)
@@ -517,7 +535,7 @@ private:
         LodSetResult result;
         {
             ProgressSpan chain(progress, kWeldingShare, 100);
-            result = buildProxyChain_(mesh, store, firstDistance, progress.step);
+            result = buildProxyChain_(mesh, store, range, progress.step);
         }
         if (!result.ok())
             throw std::runtime_error("a cluster proxy: " + result.error);
@@ -597,16 +615,18 @@ private:
     const BuildProxyChain& buildProxyChain_;
     const ProgressSpans& progress_;
     std::vector<ClusterNode> nodes_;
+    std::vector<std::size_t> parent_;  // the root's: 0
     std::vector<ClusterWork> work_;
     HierarchyStats stats_;
 };
 
 }  // namespace
 
-LodChainOptions proxyChainOptions(LodChainOptions options, int triangles, double nearestDistance)
+LodChainOptions proxyChainOptions(LodChainOptions options, int triangles, const ProxyRange& range)
 {
-    options.nearestDistance = nearestDistance;
-    if (nearestDistance > 0 && options.hausdorffSamples == 0)
+    options.nearestDistance = range.nearest;
+    options.farthestDistance = range.farthest;
+    if (range.nearest > 0 && options.hausdorffSamples == 0)
         options.hausdorffSamples = std::clamp<std::size_t>(std::size_t(triangles), kProxySamples, 100000);
     return options;
 }

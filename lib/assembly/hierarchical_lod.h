@@ -24,9 +24,17 @@
 
 namespace cadlod {
 
-// The chain of a cluster's merged parts, planned from `nearestDistance` on, its steps to
-// `progress` (null: none; several chains may run at once, parallel_tasks.h).
-using BuildProxyChain = std::function<LodSetResult(CoreMesh& merged, LevelStore& store, double nearestDistance,
+// Where a cluster proxy's chain is planned, as distances at which its error is one pixel:
+// from `nearest` (it is never drawn nearer) to `farthest` (0: on to the far field; else its
+// parent cluster's proxy takes over before the eye is that far).
+struct ProxyRange {
+    double nearest = 0;
+    double farthest = 0;
+};
+
+// The chain of a cluster's merged parts, planned over `range`, its steps to `progress` (null:
+// none; several chains may run at once, parallel_tasks.h).
+using BuildProxyChain = std::function<LodSetResult(CoreMesh& merged, LevelStore& store, const ProxyRange& range,
                                                    vcg::CallBackPos* progress)>;
 
 struct HierarchyOptions {
@@ -57,10 +65,15 @@ inline constexpr double kDrawCallTriangles = 256.0;
 // The fewest Hausdorff samples per side a cluster proxy is measured with.
 inline constexpr std::size_t kProxySamples = 20000;
 
-// A proxy's chain options from the parts' own: planned from `nearestDistance` on; measured
-// with more samples where none were asked for (its parts' levels are measured already, its
-// error must hold over a whole cluster).
-LodChainOptions proxyChainOptions(LodChainOptions options, int triangles, double nearestDistance);
+// A proxy's chain is planned only up to this many times the distance from which its parent's
+// proxy may first be drawn: the parent's own chain starts there, its levels twice as far
+// apart, so its proxy has taken over by then.
+inline constexpr double kParentTakeOverMargin = 4.0;
+
+// A proxy's chain options from the parts' own: planned over `range`; measured with more
+// samples where none were asked for (its parts' levels are measured already, its error must
+// hold over a whole cluster).
+LodChainOptions proxyChainOptions(LodChainOptions options, int triangles, const ProxyRange& range);
 
 struct HierarchyStats {
     std::size_t clusters = 0;

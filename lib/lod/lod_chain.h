@@ -70,6 +70,9 @@ struct LodChainOptions {
     // > 0: the first level is planned for this distance when it is farther than the usual
     // first distance; a cluster proxy, never drawn nearer, needs no level before it.
     double nearestDistance = 0.0;
+    // > 0: no level is planned past this distance, the last one serving from there on; a
+    // cluster proxy is drawn no farther than where its parent cluster's proxy takes over.
+    double farthestDistance = 0.0;
 };
 
 // Where the model is this many pixels high (its diagonal), the pieces go into the far field

@@ -208,6 +208,8 @@ private:
         bool planned = true;
         int k = 0;
         for (double d = firstDistance();; d *= halfStep, planned = !planned, k += planned ? 1 : 0) {
+            if (options_.farthestDistance > 0 && d > options_.farthestDistance)
+                break;
             if (d >= dProxy_) {
                 if (!boxProxy_.mesh)
                     takeBoxProxy();
@@ -440,6 +442,8 @@ private:
     // is drawn from where its measured error is within the pixel error, like any level.
     void addProxies()
     {
+        if (!boxProxy_.mesh)
+            return;  // the chain stopped at options_.farthestDistance, nearer than the box serves
         addBoxProxy();
         if (options_.proxyPixels > kTetrahedronPixels)
             addTetrahedronProxies();

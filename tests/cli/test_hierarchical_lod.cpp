@@ -324,10 +324,11 @@ void readyForMeasure(CoreMesh& m)
     vcg::tri::UpdateBounding<CoreMesh>::Box(m);
 }
 
-LodSetResult chainFrom(CoreMesh& m, LevelStore& store, double nearest, vcg::CallBackPos* = nullptr)
+LodSetResult chainFrom(CoreMesh& m, LevelStore& store, const ProxyRange& range, vcg::CallBackPos* = nullptr)
 {
     LodChainOptions o;
-    o.nearestDistance = nearest;
+    o.nearestDistance = range.nearest;
+    o.farthestDistance = range.farthest;
     CoreMesh scratch;
     return buildLodChain<CoreMesh>(m, scratch, o, [&](int) -> CoreMesh& { return store.add(); });
 }
@@ -369,7 +370,7 @@ AssemblyConversion convertGrid(const std::string& dir)
         throw std::runtime_error(imported.error);
     return convertAssembly(
         imported.scene, "grid", PartWelding{},
-        [](CoreMesh& m, LevelStore& store, vcg::CallBackPos*) { return chainFrom(m, store, 0); }, true);
+        [](CoreMesh& m, LevelStore& store, vcg::CallBackPos*) { return chainFrom(m, store, {}); }, true);
 }
 
 }  // namespace

@@ -102,6 +102,30 @@ TEST(LodChain, GoesDownToTheFarFieldInContiguousRanges)
     EXPECT_EQ(levels.back().switchIn, kNeverCulled);
 }
 
+// With a farthest distance (a cluster proxy whose parent takes over there), the chain stops:
+// its levels are the unbounded chain's up to that distance, the last one drawn on from there,
+// and no box or tetrahedron follows.
+TEST(LodChain, AFarthestDistanceEndsTheChainWithTheSameLevelsBeforeIt)
+{
+    const Chain whole(assemblyBuilder());
+    ASSERT_TRUE(whole.result.ok()) << whole.result.error;
+    ASSERT_GE(whole.result.levels.size(), 6u);
+    LodChainOptions options;
+    options.farthestDistance = whole.result.levels[3].switchOut;
+    const Chain cut(assemblyBuilder(), options);
+    ASSERT_TRUE(cut.result.ok()) << cut.result.error;
+    const auto& levels = cut.result.levels;
+    ASSERT_GE(levels.size(), 3u);
+    EXPECT_LT(levels.size(), whole.result.levels.size());
+    for (std::size_t k = 0; k + 1 < levels.size(); ++k) {
+        EXPECT_EQ(levels[k].faces, whole.result.levels[k].faces) << "level " << k;
+        EXPECT_EQ(levels[k].switchIn, whole.result.levels[k].switchIn) << "level " << k;
+    }
+    EXPECT_LE(levels.back().switchOut, options.farthestDistance);
+    EXPECT_EQ(levels.back().switchIn, kNeverCulled);
+    EXPECT_GT(levels.back().faces, 12);  // not the box
+}
+
 // Measured again, independently (other seed, four times the samples), no level is drawn
 // where its error projects to more than the pixel error (5 % sampling slack).
 TEST(LodChain, NoLevelIsDrawnBeyondItsPixelError)
