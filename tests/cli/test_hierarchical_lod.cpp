@@ -4,6 +4,7 @@
 // nearest vertex; every placement is drawn exactly once, by itself or by one cluster proxy;
 // every LOD node's ranges are contiguous; far off, a few proxies replace the parts.
 #include "cli_runner.h"
+#include "flt_bytes.h"
 #include "osg_view_probe.h"
 
 #include "assembly/hierarchical_lod.h"
@@ -240,16 +241,6 @@ TEST(CliHierarchicalLod, AFileThatSharesNothingIsClusteredByItsParts)
     EXPECT_EQ(one.at("output").at("lodNodes"), one.at("levels").size());  // one chain: a record per level
 }
 
-// The bytes of an OpenFlight file after its header record (which holds the date it was written).
-std::string afterHeader(const std::string& path)
-{
-    const std::string bytes = readFile(path);
-    if (bytes.size() < 4)
-        return {};
-    const std::size_t length = (std::size_t((unsigned char)bytes[2]) << 8) | (unsigned char)bytes[3];
-    return bytes.substr(std::min(length, bytes.size()));
-}
-
 // The parts' chains and the clusters' proxies run at once on several threads; what they make
 // does not depend on how many, nor on which ran first: the same file and the same chains as
 // on one thread. 32 distinct parts with creases, so that the simplifications overlap.
@@ -263,7 +254,8 @@ TEST(CliHierarchicalLod, TheSameFileOnOneThreadOrTwo)
                                       threads, "--report", name + ".json"});
         ASSERT_EQ(run.exitCode, 0) << run.stderrText;
     }
-    const std::string one = afterHeader(dir + "/on1/assembly.flt"), two = afterHeader(dir + "/on2/assembly.flt");
+    const std::string one = afterHeader(readFile(dir + "/on1/assembly.flt"));
+    const std::string two = afterHeader(readFile(dir + "/on2/assembly.flt"));
     ASSERT_GT(one.size(), 1000u);
     EXPECT_TRUE(one == two) << one.size() << " bytes on one thread, " << two.size() << " on two";
     const nlohmann::json parts1 = nlohmann::json::parse(readFile(dir + "/on1/assembly.json")).at("parts");

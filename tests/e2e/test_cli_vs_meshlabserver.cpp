@@ -6,6 +6,7 @@
 // mesh, so the MeshLab route expands the demo's shared parts: the command does too, here.
 // With Hierarchy "per part and cluster" the filter reads the layer's VRML file again and
 // writes the command's hierarchical LOD itself: the same file.
+#include "flt_bytes.h"
 #include "meshlabserver_runner.h"
 #include "osg_probe.h"
 
@@ -57,16 +58,6 @@ std::string perPartAndCluster(const std::string& file, const std::string& hierar
                                              mlxParam("RichSaveFile", "hierarchyFile", file)})});
 }
 
-// The bytes of an OpenFlight file after its header record (which holds the date it was written).
-std::string afterHeader(const std::string& path)
-{
-    const std::string bytes = readText(path);
-    if (bytes.size() < 4)
-        return {};
-    const std::size_t length = (std::size_t((unsigned char)bytes[2]) << 8) | (unsigned char)bytes[3];
-    return bytes.substr(std::min(length, bytes.size()));
-}
-
 // The filter's file against the command's, for Hierarchy `hierarchy` and `cadlod convert
 // --hlod option`.
 void expectTheCommandsFile(const std::string& hierarchy, const std::string& option)
@@ -86,7 +77,7 @@ void expectTheCommandsFile(const std::string& hierarchy, const std::string& opti
                                 option + " -o '" + viaCommand + "' > '" + dir + "/command.log' 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << readText(dir + "/command.log");
 
-    const std::string a = afterHeader(viaServer), b = afterHeader(viaCommand);
+    const std::string a = afterHeader(readText(viaServer)), b = afterHeader(readText(viaCommand));
     ASSERT_GT(a.size(), 100000u);
     EXPECT_TRUE(a == b) << "the filter's file differs from the command's: " << a.size() << " against " << b.size()
                         << " bytes after the header";
