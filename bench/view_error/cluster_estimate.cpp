@@ -161,14 +161,24 @@ int ClusterGrid::cellIndex(const osg::Vec3f& point) const
     return index;
 }
 
-double ClusterGrid::distanceToCell(const osg::Vec3d& eye, int cell) const
+osg::BoundingBoxd ClusterGrid::cellBox(int cell) const
 {
     const int along[3] = {cell % kCells, cell / kCells % kCells, cell / (kCells * kCells)};
-    double squared = 0;
+    osg::BoundingBoxd box;
     for (int axis = 0; axis < 3; ++axis) {
         const double step = size_[axis] / kCells;
-        const double lo = lo_[axis] + step * along[axis], hi = lo + step;
-        const double gap = std::max({lo - eye[axis], eye[axis] - hi, 0.0});
+        box._min[axis] = lo_[axis] + step * along[axis];
+        box._max[axis] = box._min[axis] + step;
+    }
+    return box;
+}
+
+double ClusterGrid::distanceToCell(const osg::Vec3d& eye, int cell) const
+{
+    const osg::BoundingBoxd box = cellBox(cell);
+    double squared = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double gap = std::max({box._min[axis] - eye[axis], eye[axis] - box._max[axis], 0.0});
         squared += gap * gap;
     }
     return std::sqrt(squared);
@@ -176,11 +186,7 @@ double ClusterGrid::distanceToCell(const osg::Vec3d& eye, int cell) const
 
 double ClusterGrid::distanceToCentre(const osg::Vec3d& eye, int cell) const
 {
-    const int along[3] = {cell % kCells, cell / kCells % kCells, cell / (kCells * kCells)};
-    osg::Vec3d centre;
-    for (int axis = 0; axis < 3; ++axis)
-        centre[axis] = lo_[axis] + size_[axis] / kCells * (along[axis] + 0.5);
-    return (centre - eye).length();
+    return (cellBox(cell).center() - eye).length();
 }
 
 double ClusterGrid::nodeShare(const osg::Vec3d& eye) const

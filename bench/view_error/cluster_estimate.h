@@ -46,6 +46,7 @@ public:
 
 private:
     int cellIndex(const osg::Vec3f& point) const;
+    osg::BoundingBoxd cellBox(int cell) const;
     double distanceToCell(const osg::Vec3d& eye, int cell) const;
     double distanceToCentre(const osg::Vec3d& eye, int cell) const;
 

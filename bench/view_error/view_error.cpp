@@ -9,8 +9,8 @@
 // s). Prints per path the worst and mean worst error, the triangles drawn as a share of level
 // 0 and the drawables (mean, most, and of them the cluster proxies); with --estimate REF, also
 // the share the per-cluster estimate of REF's chain draws (cluster_estimate.h) and the ratio
-// of the two, and the same for the estimate's cells as LOD nodes; with --walk-csv, every walk point's figures; with --box, the paths are laid in
-// that box rather than the model's own.
+// of the two, and the same for the estimate's cells as LOD nodes; with --walk-csv, every walk
+// point's figures; with --box, the paths are laid in that box rather than the model's own.
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
 #include <osg/Geometry>

@@ -283,7 +283,6 @@ private:
     std::function<MeshType&()> newMesh_;
     std::deque<Bucket> buckets_;
     std::shared_ptr<ComponentSurfaces> wholeModel_;  // the model as dealt (rest_of_model.h)
-    bool ownBits_ = false;
     bool holdBeforeFarField_ = false;  // holdToDistanceBeforeFarField
 };
 
