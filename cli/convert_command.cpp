@@ -133,6 +133,7 @@ nlohmann::json optionsJson(const ConvertArgs& a, const LoadedMesh& loaded)
             {"hlod", a.hlod},
             {"clusterParts", clusterTree(a).leafItems},
             {"clusterFanout", clusterTree(a).fanout},
+            {"clusterLargeShare", clusterTree(a).largeShare},
             {"pixelError", a.pixelError},
             {"fovY", a.fov},
             {"viewport", a.viewport},
@@ -293,7 +294,8 @@ nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
             {"proxyTriangles", h.proxyTriangles},
             {"mergedTriangles", h.inputTriangles},
             {"clusterParts", clusterTree(a).leafItems},
-            {"fanout", clusterTree(a).fanout}};
+            {"fanout", clusterTree(a).fanout},
+            {"largeShare", clusterTree(a).largeShare}};
 }
 
 void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
@@ -304,9 +306,10 @@ void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
         return;
     }
     std::fprintf(stderr,
-                 "cadlod: hlod %s: %zu clusters of up to %zu placements (%zu per node), %zu with proxies: %zu proxy "
-                 "levels, %zu triangles, merged from %zu\n",
-                 a.hlod.c_str(), h.clusters, clusterTree(a).leafItems, clusterTree(a).fanout, h.proxied,
+                 "cadlod: hlod %s: %zu clusters of up to %zu placements (%zu per node%s), %zu with proxies: %zu "
+                 "proxy levels, %zu triangles, merged from %zu\n",
+                 a.hlod.c_str(), h.clusters, clusterTree(a).leafItems, clusterTree(a).fanout,
+                 clusterTree(a).largeShare > 0 ? ", the largest above" : "", h.proxied,
                  h.proxyLevels, h.proxyTriangles, h.inputTriangles);
 }
 

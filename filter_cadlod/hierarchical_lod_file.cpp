@@ -106,10 +106,11 @@ void logConversion(MeshFilterInterface& plugin, const Converted& c, const Cluste
 {
     const std::size_t placements = c.conversion.model.placements.size();
     plugin.Log("CAD LOD set, per part and cluster: %zu distinct parts in %zu placements, each part's chain once; "
-               "%zu clusters of up to %zu placements (%zu per node), %zu with proxies: %zu proxy levels, %zu "
+               "%zu clusters of up to %zu placements (%zu per node%s), %zu with proxies: %zu proxy levels, %zu "
                "triangles merged from %zu",
-               c.conversion.parts.size(), placements, c.hierarchy.clusters, tree.leafItems, tree.fanout, c.hierarchy.proxied, c.hierarchy.proxyLevels, c.hierarchy.proxyTriangles,
-               c.hierarchy.inputTriangles);
+               c.conversion.parts.size(), placements, c.hierarchy.clusters, tree.leafItems, tree.fanout,
+               tree.largeShare > 0 ? ", the largest above" : "", c.hierarchy.proxied, c.hierarchy.proxyLevels,
+               c.hierarchy.proxyTriangles, c.hierarchy.inputTriangles);
     plugin.Log("CAD LOD set, per part and cluster: wrote %s: %zu bytes, %zu triangles in %.2f s (the document is "
                "unchanged: a layer cannot hold instances)",
                qUtf8Printable(output), written.bytes, written.triangles, seconds);

@@ -79,14 +79,37 @@ std::vector<Group> split(Group g, const std::vector<Box3>& items, const ClusterT
     return groups;
 }
 
+// Takes out of `g` the items nearly as large as the whole group (box `all`), at most
+// `leafItems` of them: below, each would make the cluster holding it about as large as this one
+// and keep its smaller neighbours from being drawn together until as far.
+Group takeLarge(Group& g, const Box3& all, const std::vector<Box3>& items, const ClusterTreeOptions& options)
+{
+    if (options.largeShare <= 0)
+        return {};
+    const double large = options.largeShare * all.halfDiagonal();
+    Group held;
+    for (std::size_t i : g)
+        if (items[i].halfDiagonal() > large)
+            held.push_back(i);
+    if (held.empty() || held.size() > options.leafItems || held.size() == g.size())
+        return {};
+    g.erase(std::remove_if(g.begin(), g.end(),
+                           [&](std::size_t i) { return std::binary_search(held.begin(), held.end(), i); }),
+            g.end());
+    return held;
+}
+
 void buildNode(std::vector<ClusterNode>& nodes, std::size_t index, Group g, const std::vector<Box3>& items,
                const ClusterTreeOptions& options)
 {
+    std::sort(g.begin(), g.end());
     for (std::size_t i : g)
         nodes[index].box.add(items[i]);
+    if (g.size() > options.leafItems)
+        nodes[index].items = takeLarge(g, nodes[index].box, items, options);
     if (g.size() <= options.leafItems) {
-        std::sort(g.begin(), g.end());
-        nodes[index].items = std::move(g);
+        nodes[index].items.insert(nodes[index].items.end(), g.begin(), g.end());
+        std::sort(nodes[index].items.begin(), nodes[index].items.end());
         return;
     }
     for (Group& child : split(std::move(g), items, options)) {

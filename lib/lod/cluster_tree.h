@@ -1,8 +1,10 @@
 // A spatial hierarchy of placed parts (design.md §5, HLOD): boxes grouped top-down into
 // clusters of nearby boxes, so that a viewer near one part is far from most clusters. Each
 // split cuts the largest group at the median of its box centres along their widest axis,
-// until a node has `fanout` groups; a node of at most `leafItems` boxes is a leaf. Plain
-// data: no mesh type.
+// until a node has `fanout` groups; a node of at most `leafItems` boxes is a leaf. Optionally
+// a box nearly as large as its whole group (a board under its parts) stays at the node above
+// the split, so that the clusters below are as small as their other boxes. Plain data: no
+// mesh type.
 #pragma once
 
 #include <array>
@@ -27,7 +29,7 @@ struct Box3 {
 
 struct ClusterNode {
     Box3 box;
-    std::vector<std::size_t> items;     // the boxes of a leaf, by index
+    std::vector<std::size_t> items;     // the boxes held here, by index: a leaf's all, above only large ones
     std::vector<std::size_t> children;  // the nodes below, by index (after this one)
     bool leaf() const { return children.empty(); }
 };
@@ -35,9 +37,12 @@ struct ClusterNode {
 struct ClusterTreeOptions {
     std::size_t leafItems = 48;
     std::size_t fanout = 8;
+    // A box stays above a split when its half-diagonal exceeds this share of its group's, and
+    // at most `leafItems` boxes do (0: every box goes down to a leaf).
+    double largeShare = 0;
 };
 
-// nodes[0] is the root; every item is in exactly one leaf. Empty for no items.
+// nodes[0] is the root; every item is held by exactly one node. Empty for no items.
 std::vector<ClusterNode> buildClusterTree(const std::vector<Box3>& items, const ClusterTreeOptions& options = {});
 
 }  // namespace cadlod

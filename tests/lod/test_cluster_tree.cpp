@@ -1,0 +1,116 @@
+#include "lod/cluster_tree.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace cadlod {
+namespace {
+
+Box3 cube(double x, double y, double z, double half)
+{
+    Box3 b;
+    b.add(std::array<double, 3>{x - half, y - half, z - half});
+    b.add(std::array<double, 3>{x + half, y + half, z + half});
+    return b;
+}
+
+// A grid of n x n small cubes at unit pitch on z = 0.
+std::vector<Box3> grid(int n)
+{
+    std::vector<Box3> boxes;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+            boxes.push_back(cube(i, j, 0, 0.2));
+    return boxes;
+}
+
+// Which node holds each item; -1 where none, -2 where more than one.
+std::vector<int> holders(const std::vector<ClusterNode>& nodes, std::size_t count)
+{
+    std::vector<int> holder(count, -1);
+    for (std::size_t n = 0; n < nodes.size(); ++n)
+        for (std::size_t i : nodes[n].items)
+            holder[i] = holder[i] == -1 ? int(n) : -2;
+    return holder;
+}
+
+bool contains(const Box3& outer, const Box3& inner)
+{
+    for (int a = 0; a < 3; ++a)
+        if (inner.lo[a] < outer.lo[a] || inner.hi[a] > outer.hi[a])
+            return false;
+    return true;
+}
+
+TEST(ClusterTree, EveryItemIsHeldOnceAndEveryBoxHoldsWhatIsBelow)
+{
+    std::vector<Box3> boxes = grid(12);
+    boxes.push_back(cube(5.5, 5.5, -0.5, 6.5));  // a board under the parts
+    const std::vector<ClusterNode> nodes = buildClusterTree(boxes, {4, 3, 0.5});
+    const std::vector<int> holder = holders(nodes, boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        ASSERT_GE(holder[i], 0) << "item " << i;
+        EXPECT_TRUE(contains(nodes[std::size_t(holder[i])].box, boxes[i])) << "item " << i;
+    }
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+        EXPECT_LE(nodes[n].children.size(), 3u);
+        EXPECT_LE(nodes[n].items.size(), 4u);
+        EXPECT_FALSE(nodes[n].leaf() && nodes[n].items.empty());
+        for (std::size_t child : nodes[n].children) {
+            ASSERT_GT(child, n);
+            EXPECT_TRUE(contains(nodes[n].box, nodes[child].box));
+        }
+    }
+}
+
+TEST(ClusterTree, ABoardUnderItsPartsStaysAboveTheSplit)
+{
+    std::vector<Box3> boxes = grid(8);
+    const std::size_t board = boxes.size();
+    boxes.push_back(cube(3.5, 3.5, -0.5, 4.5));
+    const std::vector<ClusterNode> nodes = buildClusterTree(boxes, {2, 2, 0.5});
+    ASSERT_FALSE(nodes.empty());
+    const std::vector<std::size_t>& top = nodes.front().items;
+    EXPECT_NE(std::find(top.begin(), top.end(), board), top.end());
+    EXPECT_EQ(top.size(), 1u);
+    // Below the board, every cluster is as small as its parts make it: a leaf of two
+    // neighbouring parts spans two pitches at most.
+    for (const ClusterNode& node : nodes)
+        if (node.leaf())
+            EXPECT_LT(node.box.halfDiagonal(), 1.0);
+}
+
+TEST(ClusterTree, PartsOfOneSizeAreHeldOnlyByLeaves)
+{
+    const std::vector<Box3> boxes = grid(10);
+    const std::vector<ClusterNode> nodes = buildClusterTree(boxes, {2, 2, 0.5});
+    for (const ClusterNode& node : nodes) {
+        EXPECT_TRUE(node.leaf() || node.items.empty());
+        if (node.leaf())
+            EXPECT_LE(node.items.size(), 2u);
+    }
+}
+
+TEST(ClusterTree, WithoutALargeShareEveryBoxGoesDownToALeaf)
+{
+    std::vector<Box3> boxes = grid(8);
+    const std::size_t board = boxes.size();
+    boxes.push_back(cube(3.5, 3.5, -0.5, 4.5));
+    const std::vector<ClusterNode> nodes = buildClusterTree(boxes, {2, 2});
+    for (const ClusterNode& node : nodes) {
+        EXPECT_TRUE(node.leaf() || node.items.empty());
+        if (std::find(node.items.begin(), node.items.end(), board) != node.items.end())
+            EXPECT_GT(node.box.halfDiagonal(), 4.5);
+    }
+}
+
+TEST(ClusterTree, NoItemsNoNodes)
+{
+    EXPECT_TRUE(buildClusterTree({}).empty());
+}
+
+}  // namespace
+}  // namespace cadlod
