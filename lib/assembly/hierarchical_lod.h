@@ -6,8 +6,8 @@
 // nearer. Shared parts stay instances below the clusters.
 //
 // A proxy is made bottom-up from what the cluster holds, each at its coarsest level (part
-// level or child proxy) whose error is at most kProxyInputShare of the error the proxy may
-// show where it is first drawn; its error is that input's plus its own measured against
+// level or child proxy) whose error is at most the error the proxy may show where it is
+// first drawn (kProxyInputShare); its error is that input's plus its own measured against
 // the input (the triangle inequality of the Hausdorff distance). A proxy is kept where it
 // costs less to draw than what it replaces; its ranges are then set top-down: a proxy only
 // the parent's proxy would hide is left out.
@@ -56,8 +56,11 @@ inline constexpr std::size_t kSimplifiedClusterPlacements = 48;
 // viewer is.
 inline constexpr ClusterTreeOptions kFewestCallsTree{2, 2, 0.5};
 
-// Of the error a proxy may show where it is first drawn, the share its input may use.
-inline constexpr double kProxyInputShare = 0.5;
+// Of the error a proxy may show where it is first drawn, the share its input may use. All
+// of it: the input is then what the cluster's pieces show there anyway, merged, and the
+// proxy's own error only moves its first level out a little. A finer input makes every
+// level's collapses and measures dearer, and its levels come out no lighter.
+inline constexpr double kProxyInputShare = 1.0;
 
 // A proxy replaces what a cluster holds where drawing it costs less, a draw call counting
 // as this many triangles (the per-call work of a renderer).
