@@ -51,9 +51,9 @@ struct HierarchyOptions {
 // With fewestCalls, the fewest placements a cluster holds to get simplified proxies too.
 inline constexpr std::size_t kSimplifiedClusterPlacements = 48;
 
-// With fewestCalls, the tree: leaves of two placements, two nodes below a cluster, a
-// placement as large as its group above the split, so that clusters are small wherever the
-// viewer is.
+// With fewestCalls, the tree: leaves of two placements, two nodes below a cluster, and a
+// placement more than half as large as its group kept above the split, so that clusters are
+// small wherever the viewer is.
 inline constexpr ClusterTreeOptions kFewestCallsTree{2, 2, 0.5};
 
 // Of the error a proxy may show where it is first drawn, the share its input may use. All

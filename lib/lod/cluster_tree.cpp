@@ -80,8 +80,8 @@ std::vector<Group> split(Group g, const std::vector<Box3>& items, const ClusterT
 }
 
 // Takes out of `g` the items nearly as large as the whole group (box `all`), at most
-// `leafItems` of them: below, each would make the cluster holding it about as large as this one
-// and keep its smaller neighbours from being drawn together until as far.
+// `leafItems` of them: below, each would make the cluster holding it about as large as this
+// one, and keep its smaller neighbours from being drawn together until as far off.
 Group takeLarge(Group& g, const Box3& all, const std::vector<Box3>& items, const ClusterTreeOptions& options)
 {
     if (options.largeShare <= 0)
