@@ -293,6 +293,7 @@ nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
             {"proxyLevels", h.proxyLevels},
             {"proxyTriangles", h.proxyTriangles},
             {"mergedTriangles", h.inputTriangles},
+            {"copiedClusters", h.copied},
             {"clusterParts", clusterTree(a).leafItems},
             {"fanout", clusterTree(a).fanout},
             {"largeShare", clusterTree(a).largeShare}};
@@ -307,10 +308,11 @@ void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
     }
     std::fprintf(stderr,
                  "cadlod: hlod %s: %zu clusters of up to %zu placements (%zu per node%s), %zu with proxies: %zu "
-                 "proxy levels, %zu triangles, merged from %zu\n",
+                 "proxy levels, %zu triangles, merged from %zu; %zu clusters copies of others, their proxies "
+                 "moved\n",
                  a.hlod.c_str(), h.clusters, clusterTree(a).leafItems, clusterTree(a).fanout,
                  clusterTree(a).largeShare > 0 ? ", the largest above" : "", h.proxied,
-                 h.proxyLevels, h.proxyTriangles, h.inputTriangles);
+                 h.proxyLevels, h.proxyTriangles, h.inputTriangles, h.copied);
 }
 
 // An assembly that shares geometry: each distinct part simplified once, placed by instances.

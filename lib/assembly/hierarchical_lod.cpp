@@ -251,6 +251,11 @@ double drawCost(const flt::Level& level)
 
 const flt::Mat4d kIdentity{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
 
+// Two clusters are copies when their placements agree to this many steps per unit (matrix
+// entries; places in the model's diagonal): far finer than a viewer could tell, far coarser
+// than the rounding of a file's numbers.
+constexpr double kShapeSteps = 1e6;
+
 class HierarchyBuilder {
 public:
     HierarchyBuilder(AssemblyConversion& c, const HierarchyOptions& options, const PartWelding& welding,
@@ -266,6 +271,7 @@ public:
         for (const flt::PartPlacement& p : c_.model.placements)
             boxes.push_back(placedBox(c_.model.definitions[p.definition].levels.front(), p.matrix));
         nodes_ = buildClusterTree(boxes, options_.tree);
+        original_ = originalsOfCopies();
         work_.resize(nodes_.size());
         parent_.assign(nodes_.size(), 0);
         for (std::size_t n = 0; n < nodes_.size(); ++n)
@@ -299,31 +305,92 @@ private:
         return switchAtNearestPoint(projectedErrorDistance(error, options_.view), reach);
     }
 
+    // What makes cluster n what it is, about its box's low corner: its shape (how many
+    // placements each node holds, where its children begin and end) and each placement's
+    // part, turned, at its place, rounded far below what a viewer could see.
+    void appendShape(std::size_t n, const Vec3d& corner, double unit, std::vector<long long>& shape) const
+    {
+        shape.push_back(-1 - static_cast<long long>(nodes_[n].items.size()));
+        for (std::size_t p : nodes_[n].items) {
+            const flt::PartPlacement& placement = c_.model.placements[p];
+            shape.push_back(static_cast<long long>(placement.definition));
+            for (int r = 0; r < 3; ++r) {
+                for (int k = 0; k < 3; ++k)
+                    shape.push_back(std::llround(placement.matrix[r][k] * kShapeSteps));
+                shape.push_back(std::llround((placement.matrix[r][3] - corner[r]) / unit * kShapeSteps));
+            }
+        }
+        for (std::size_t child : nodes_[n].children)
+            appendShape(child, corner, unit, shape);
+        shape.push_back(std::numeric_limits<long long>::min());
+    }
+
+    // For every cluster, the first cluster it is a copy of (itself when none).
+    std::vector<std::size_t> originalsOfCopies() const
+    {
+        std::vector<std::size_t> original(nodes_.size());
+        const double unit = nodes_.empty() ? 1.0 : std::max(2.0 * nodes_.front().box.halfDiagonal(), 1e-300);
+        std::map<std::vector<long long>, std::size_t> first;
+        for (std::size_t n = 0; n < nodes_.size(); ++n) {
+            std::vector<long long> shape;
+            appendShape(n, nodes_[n].box.lo, unit, shape);
+            original[n] = first.emplace(std::move(shape), n).first->second;
+        }
+        return original;
+    }
+
     // A cluster's proxies are made from its children's: the clusters of one height (the
-    // longest way down to a leaf) are made at once, the lowest first.
+    // longest way down to a leaf) are made at once, the lowest first; then the copies of
+    // that height get theirs moved.
     void makeProxiesChildrenFirst()
     {
         std::vector<std::size_t> height(nodes_.size(), 0);
         for (std::size_t n = nodes_.size(); n-- > 0;)  // a child's index is above its parent's
             for (std::size_t child : nodes_[n].children)
                 height[n] = std::max(height[n], height[child] + 1);
-        std::vector<std::vector<std::size_t>> byHeight(nodes_.empty() ? 0 : height.front() + 1);
+        std::vector<std::vector<std::size_t>> made(nodes_.empty() ? 0 : height.front() + 1), moved(made.size());
         for (std::size_t n = nodes_.size(); n-- > 0;)
-            byHeight[height[n]].push_back(n);
-        std::size_t before = 0;
-        for (const std::vector<std::size_t>& same : byHeight) {
+            (original_[n] == n ? made : moved)[height[n]].push_back(n);
+        std::size_t toMake = 0, before = 0;
+        for (const std::vector<std::size_t>& same : made)
+            toMake += same.size();
+        for (std::size_t h = 0; h < made.size(); ++h) {
+            const std::vector<std::size_t>& same = made[h];
             runTasks(
                 same.size(),
-                [&](std::size_t i, const ProgressSpans& progress) { makeProxies(same[i], before + i, progress); },
+                [&](std::size_t i, const ProgressSpans& progress) {
+                    makeProxies(same[i], before + i, toMake, progress);
+                },
                 progress_);
             before += same.size();
+            for (std::size_t n : moved[h])
+                moveCopy(n);
         }
         for (const ClusterWork& work : work_)
             stats_.inputTriangles += work.mergedTriangles;
     }
 
-    // Cluster n's proxy candidates, the `order`-th cluster made.
-    void makeProxies(std::size_t n, std::size_t order, const ProgressSpans& progress)
+    // Cluster n's proxies: its original's, moved by the way their boxes lie apart.
+    void moveCopy(std::size_t n)
+    {
+        const ClusterWork& from = work_[original_[n]];
+        ClusterWork& work = work_[n];
+        work.centre = nodes_[n].box.center();
+        work.radius = nodes_[n].box.halfDiagonal();
+        work.selected = from.selected;
+        work.from = from.from;
+        work.candidates = from.candidates;
+        const Vec3d offset{work.centre[0] - from.centre[0], work.centre[1] - from.centre[1],
+                           work.centre[2] - from.centre[2]};
+        for (Candidate& candidate : work.candidates) {
+            moveBy(candidate.level, offset);
+            candidate.level.center = work.centre;
+        }
+        ++stats_.copied;
+    }
+
+    // Cluster n's proxy candidates, the `order`-th of `count` clusters made.
+    void makeProxies(std::size_t n, std::size_t order, std::size_t count, const ProgressSpans& progress)
     {
         const ClusterNode& node = nodes_[n];
         ClusterWork& work = work_[n];
@@ -346,8 +413,8 @@ private:
         gather(n, allowance, merged, inputError);
         work.mergedTriangles = merged.triangles();
         {
-            ProgressSpan span(progress, int(100 * order / nodes_.size()), int(100 * (order + 1) / nodes_.size()),
-                              "proxy " + std::to_string(order + 1) + "/" + std::to_string(nodes_.size()));
+            ProgressSpan span(progress, int(100 * order / count), int(100 * (order + 1) / count),
+                              "proxy " + std::to_string(order + 1) + "/" + std::to_string(count));
             // The chain's first level then lands about where the proxy can first be drawn.
             const double first =
                 std::max(0.0, nearest - work.radius - projectedErrorDistance(inputError, options_.view));
@@ -547,20 +614,22 @@ private:
         for (std::size_t k = 0; k < levels.levels.size() && k < result.levels.size(); ++k) {
             Candidate candidate;
             candidate.level = asOneDrawable(std::move(levels.levels[k]), "proxy");
-            moveTo(candidate.level, work.centre);
+            moveBy(candidate.level, work.centre);
+            candidate.level.center = work.centre;
             candidate.error = inputError + result.levels[k].hausdorffMax;
             candidate.reach = candidate.level.reachFrom(work.centre);
             work.candidates.push_back(std::move(candidate));
         }
     }
 
-    static void moveTo(flt::Level& level, const Vec3d& centre)
+    static void moveBy(flt::Level& level, const Vec3d& offset)
     {
         for (flt::Part& part : level.parts)
             for (Vec3d& p : part.positions)
                 for (int a = 0; a < 3; ++a)
-                    p[a] += centre[a];
-        level.center = centre;
+                    p[a] += offset[a];
+        for (int a = 0; a < 3; ++a)
+            level.center[a] += offset[a];
     }
 
     // Cluster n's proxies that are ever drawn: below `cutoff` (where the parent's proxy
@@ -616,6 +685,7 @@ private:
     const ProgressSpans& progress_;
     std::vector<ClusterNode> nodes_;
     std::vector<std::size_t> parent_;  // the root's: 0
+    std::vector<std::size_t> original_;  // of each cluster, the cluster it is a copy of (or itself)
     std::vector<ClusterWork> work_;
     HierarchyStats stats_;
 };

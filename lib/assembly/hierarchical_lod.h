@@ -5,6 +5,9 @@
 // proxy's error holds at the cluster's nearest point (lod/nearest_point.h), as its parts
 // nearer. Shared parts stay instances below the clusters.
 //
+// A cluster that is another's copy moved (the same parts, turned alike, at the same places
+// about it: a repeated rack of boards) gets that cluster's proxies moved, not made again.
+//
 // A proxy is made bottom-up from what the cluster holds, each at its coarsest level (part
 // level or child proxy) whose error is at most the error the proxy may show where it is
 // first drawn (kProxyInputShare); its error is that input's plus its own measured against
@@ -85,9 +88,10 @@ struct HierarchyStats {
     std::size_t proxyLevels = 0;
     std::size_t proxyTriangles = 0;
     std::size_t inputTriangles = 0;  // merged into proxies, before simplifying
+    std::size_t copied = 0;          // clusters whose proxies were moved from a copy's, not made
 };
 
-// Puts c.model's placements into clusters with proxies, each proxy a span of `progress`.
+// Puts c.model's placements into clusters with proxies, each proxy made a span of `progress`.
 // The proxies of the clusters of one height are made at once (parallel_tasks.h).
 // Throws std::runtime_error when a proxy cannot be built.
 HierarchyStats buildHierarchy(AssemblyConversion& c, const HierarchyOptions& options, const PartWelding& welding,

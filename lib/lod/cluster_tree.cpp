@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace cadlod {
@@ -39,6 +40,10 @@ namespace {
 
 using Group = std::vector<std::size_t>;
 
+// Gaps that differ by less than this share of the group's extent are alike: copies of a
+// rack stand the same gap apart, to the rounding of single-precision vertices.
+constexpr double kGapsAlike = 1e-4;
+
 Box3 centresOf(const Group& g, const std::vector<Box3>& items)
 {
     Box3 b;
@@ -47,7 +52,35 @@ Box3 centresOf(const Group& g, const std::vector<Box3>& items)
     return b;
 }
 
-// Cuts `g` in two at the median of its centres along their widest axis.
+// Where to cut `sorted` (by centre along `axis`): at the widest gap between the boxes on
+// either side within its middle half, the one nearest the median of gaps alike, so that
+// the pieces of an assembly that stand apart (racks, bays) become clusters of their own,
+// and copies of one piece get clusters alike; at the median where no gap is.
+std::size_t cutIndex(const Group& sorted, const std::vector<Box3>& items, int axis, double extent)
+{
+    const std::size_t n = sorted.size();
+    std::vector<double> lowestRight(n + 1, std::numeric_limits<double>::max());
+    for (std::size_t k = n; k-- > 0;)
+        lowestRight[k] = std::min(lowestRight[k + 1], items[sorted[k]].lo[axis]);
+    const double alike = kGapsAlike * extent;
+    auto offMedian = [n](std::size_t k) { return k > n / 2 ? k - n / 2 : n / 2 - k; };
+    std::size_t cut = n / 2;
+    double widest = alike;
+    double highestLeft = -std::numeric_limits<double>::max();
+    for (std::size_t k = 1; k < n; ++k) {
+        highestLeft = std::max(highestLeft, items[sorted[k - 1]].hi[axis]);
+        if (4 * k < n || 4 * k > 3 * n)
+            continue;
+        const double gap = lowestRight[k] - highestLeft;
+        if (gap > widest + alike || (gap > widest - alike && gap > alike && offMedian(k) < offMedian(cut))) {
+            widest = std::max(widest, gap);
+            cut = k;
+        }
+    }
+    return cut;
+}
+
+// Cuts `g` in two along the widest axis of its centres (cutIndex).
 std::pair<Group, Group> bisect(Group g, const std::vector<Box3>& items)
 {
     const Box3 c = centresOf(g, items);
@@ -55,11 +88,11 @@ std::pair<Group, Group> bisect(Group g, const std::vector<Box3>& items)
     for (int a = 1; a < 3; ++a)
         if (c.hi[a] - c.lo[a] > c.hi[axis] - c.lo[axis])
             axis = a;
-    const auto middle = g.begin() + std::ptrdiff_t(g.size() / 2);
-    std::nth_element(g.begin(), middle, g.end(), [&](std::size_t a, std::size_t b) {
+    std::sort(g.begin(), g.end(), [&](std::size_t a, std::size_t b) {
         const double ca = items[a].center()[axis], cb = items[b].center()[axis];
         return ca != cb ? ca < cb : a < b;
     });
+    const auto middle = g.begin() + std::ptrdiff_t(cutIndex(g, items, axis, c.hi[axis] - c.lo[axis]));
     return {Group(g.begin(), middle), Group(middle, g.end())};
 }
 

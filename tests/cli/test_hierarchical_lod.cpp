@@ -374,6 +374,9 @@ TEST(CliHierarchicalLod, EveryProxyIsWithinItsErrorOfThePartsItReplaces)
     options.tree.leafItems = 16;
     const HierarchyStats stats = buildHierarchy(c, options, PartWelding{}, chainFrom);
     ASSERT_GE(stats.proxyLevels, 2u);
+    // The grid's clusters repeat each other: most get their proxies moved from a copy's, and
+    // are measured where they stand, against their own parts.
+    EXPECT_GE(stats.copied, 4u);
     EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels);
 }
 

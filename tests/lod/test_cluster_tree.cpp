@@ -107,6 +107,27 @@ TEST(ClusterTree, WithoutALargeShareEveryBoxGoesDownToALeaf)
     }
 }
 
+// Three racks of 4 x 4 parts, a rack's width apart: each rack is a cluster of its own, not
+// cut at the median through the middle one.
+TEST(ClusterTree, RacksThatStandApartAreClustersOfTheirOwn)
+{
+    std::vector<Box3> boxes;
+    for (int rack = 0; rack < 3; ++rack)
+        for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 4; ++i)
+                boxes.push_back(cube(8.0 * rack + i, j, 0, 0.2));
+    const std::vector<ClusterNode> nodes = buildClusterTree(boxes, {16, 8});
+    ASSERT_FALSE(nodes.empty());
+    ASSERT_EQ(nodes.front().children.size(), 3u);
+    for (std::size_t child : nodes.front().children) {
+        const ClusterNode& rack = nodes[child];
+        ASSERT_EQ(rack.items.size(), 16u);
+        const std::size_t first = rack.items.front() / 16;
+        for (std::size_t i : rack.items)
+            EXPECT_EQ(i / 16, first) << "a cluster holds parts of two racks";
+    }
+}
+
 TEST(ClusterTree, NoItemsNoNodes)
 {
     EXPECT_TRUE(buildClusterTree({}).empty());
