@@ -1,7 +1,8 @@
 // A spatial hierarchy of placed parts (design.md §5, HLOD): boxes grouped top-down into
 // clusters of nearby boxes, so that a viewer near one part is far from most clusters. Each
-// split cuts the largest group at the median of its box centres along their widest axis,
-// until a node has `fanout` groups; a node of at most `leafItems` boxes is a leaf. Optionally
+// split cuts the largest group along the widest axis of its box centres, at the widest gap
+// between its boxes in the middle half of them (the median where there is none), until a
+// node has `fanout` groups; a node of at most `leafItems` boxes is a leaf. Optionally
 // a box nearly as large as its whole group (a board under its parts) stays at the node above
 // the split, so that the clusters below are as small as their other boxes. Plain data: no
 // mesh type.
