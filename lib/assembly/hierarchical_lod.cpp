@@ -370,7 +370,10 @@ private:
             stats_.inputTriangles += work.mergedTriangles;
     }
 
-    // Cluster n's proxies: its original's, moved by the way their boxes lie apart.
+    // Cluster n's proxies: its original's, moved by the way their boxes lie apart. Their
+    // chain stopped where the original's parent takes over (farthestDrawn); where this
+    // cluster's parent takes over later, the last level serves on, heavier than it need be
+    // but within its error.
     void moveCopy(std::size_t n)
     {
         const ClusterWork& from = work_[original_[n]];
