@@ -273,6 +273,10 @@ public:
         nodes_ = buildClusterTree(boxes, options_.tree);
         original_ = originalsOfCopies();
         work_.resize(nodes_.size());
+        for (std::size_t n = 0; n < nodes_.size(); ++n) {
+            work_[n].centre = nodes_[n].box.center();
+            work_[n].radius = nodes_[n].box.halfDiagonal();
+        }
         parent_.assign(nodes_.size(), 0);
         for (std::size_t n = 0; n < nodes_.size(); ++n)
             for (std::size_t child : nodes_[n].children)
@@ -378,8 +382,6 @@ private:
     {
         const ClusterWork& from = work_[original_[n]];
         ClusterWork& work = work_[n];
-        work.centre = nodes_[n].box.center();
-        work.radius = nodes_[n].box.halfDiagonal();
         work.selected = from.selected;
         work.from = from.from;
         work.candidates = from.candidates;
@@ -397,8 +399,6 @@ private:
     {
         const ClusterNode& node = nodes_[n];
         ClusterWork& work = work_[n];
-        work.centre = node.box.center();
-        work.radius = node.box.halfDiagonal();
         if (node.children.size() + node.items.size() < 2)
             return;  // its one part or cluster is drawn as itself
         if (options_.fewestCalls) {

@@ -126,6 +126,7 @@ Group takeLarge(Group& g, const Box3& all, const std::vector<Box3>& items, const
             held.push_back(i);
     if (held.empty() || held.size() > options.leafItems || held.size() == g.size())
         return {};
+    std::sort(held.begin(), held.end());
     g.erase(std::remove_if(g.begin(), g.end(),
                            [&](std::size_t i) { return std::binary_search(held.begin(), held.end(), i); }),
             g.end());
@@ -135,7 +136,6 @@ Group takeLarge(Group& g, const Box3& all, const std::vector<Box3>& items, const
 void buildNode(std::vector<ClusterNode>& nodes, std::size_t index, Group g, const std::vector<Box3>& items,
                const ClusterTreeOptions& options)
 {
-    std::sort(g.begin(), g.end());
     for (std::size_t i : g)
         nodes[index].box.add(items[i]);
     if (g.size() > options.leafItems)
