@@ -294,6 +294,7 @@ nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
             {"proxyTriangles", h.proxyTriangles},
             {"mergedTriangles", h.inputTriangles},
             {"copiedClusters", h.copied},
+            {"turnedCopies", h.turned},
             {"clusterParts", clusterTree(a).leafItems},
             {"fanout", clusterTree(a).fanout},
             {"largeShare", clusterTree(a).largeShare}};
@@ -308,11 +309,11 @@ void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
     }
     std::fprintf(stderr,
                  "cadlod: hlod %s: %zu clusters of up to %zu placements (%zu per node%s), %zu with proxies: %zu "
-                 "proxy levels, %zu triangles, merged from %zu; %zu clusters copies of others, their proxies "
-                 "moved\n",
+                 "proxy levels, %zu triangles, merged from %zu; %zu clusters copies of others (%zu turned), their "
+                 "proxies moved\n",
                  a.hlod.c_str(), h.clusters, clusterTree(a).leafItems, clusterTree(a).fanout,
                  clusterTree(a).largeShare > 0 ? ", the largest above" : "", h.proxied,
-                 h.proxyLevels, h.proxyTriangles, h.inputTriangles, h.copied);
+                 h.proxyLevels, h.proxyTriangles, h.inputTriangles, h.copied, h.turned);
 }
 
 // An assembly that shares geometry: each distinct part simplified once, placed by instances.

@@ -3,12 +3,16 @@
 the way CAD exports share parts: each distinct part one file placed by Inline, boards
 DEF'd once and USE'd, racks of boards USE'd again, some parts placed in a mirror.
 
-  make_assemblies.py OUTDIR [NAME RACKS BOARDS PARTS_PER_BOARD DISTINCT SEED]...
+  make_assemblies.py OUTDIR [NAME RACKS BOARDS PARTS_PER_BOARD DISTINCT SEED ROWS]...
 
 With no assembly given it writes the bench's set:
   cabinet     3 racks x 8 boards x 80 parts  = 1,920 placements of 48 distinct parts
   cabinet_q   1 rack  x 4 boards x 80 parts  =   320 placements (a quarter)
   plant      10 racks x 10 boards x 100 parts = 10,000 placements of 64 distinct parts
+  hall        8 racks x 10 boards x 100 parts =  8,000 placements of 64 distinct parts,
+              in two rows across an aisle, the second row turned half round
+Racks stand in ROWS rows; every other row is turned half round about the vertical, as
+racks that face each other across an aisle.
 Units are KiCad's (0.1 inch): convert with --unit 0.1in. Deterministic for a seed.
 """
 import os
@@ -20,7 +24,8 @@ KICAD = "/usr/share/kicad/3dmodels"
 FAMILIES = ["Capacitor_SMD", "Resistor_SMD", "Package_SO", "Package_QFP", "Connector_RJ", "Connector_PinHeader_2.54mm",
             "Package_TO_SOT_SMD", "Crystal", "Inductor_SMD", "Button_Switch_SMD", "Diode_SMD", "LED_SMD",
             "Capacitor_THT", "Connector_USB", "Package_DIP", "Relay_THT"]
-DEFAULT_SET = [("cabinet", 3, 8, 80, 48, 1), ("cabinet_q", 1, 4, 80, 48, 1), ("plant", 10, 10, 100, 64, 2)]
+DEFAULT_SET = [("cabinet", 3, 8, 80, 48, 1, 1), ("cabinet_q", 1, 4, 80, 48, 1, 1), ("plant", 10, 10, 100, 64, 2, 1),
+               ("hall", 8, 10, 100, 64, 3, 2)]
 
 
 def library_parts(distinct, rng):
@@ -63,7 +68,7 @@ def board_text(name, parts, per_board, rng, pitch):
     return "\n".join(lines)
 
 
-def write_assembly(out, name, racks, boards, per_board, distinct, seed):
+def write_assembly(out, name, racks, boards, per_board, distinct, seed, rows):
     rng = random.Random(seed)
     folder = os.path.join(out, name)
     os.makedirs(os.path.join(folder, "parts"), exist_ok=True)
@@ -84,8 +89,13 @@ def write_assembly(out, name, racks, boards, per_board, distinct, seed):
         text.append(" DEF Board_%d Transform { translation 0 0 %g rotation 1 0 0 1.5708 children %s }"
                     % (b + 1, b * 40.0, body))
     text.append("] }")
+    per_row = (racks + rows - 1) // rows
+    row_pitch = board_size + boards * 40.0 + 200
     for r in range(1, racks):
-        text.append("DEF Rack_%d Transform { translation %g 0 0 children USE RACK }" % (r + 1, r * (board_size + 100)))
+        row, place = divmod(r, per_row)
+        turn = " rotation 0 1 0 3.14159265" if row % 2 else ""
+        text.append("DEF Rack_%d Transform { translation %g 0 %g%s children USE RACK }"
+                    % (r + 1, place * (board_size + 100), row * row_pitch, turn))
     path = os.path.join(folder, name + ".wrl")
     with open(path, "w") as f:
         f.write("\n".join(text) + "\n")
@@ -98,8 +108,8 @@ def main():
     out = sys.argv[1]
     specs = sys.argv[2:]
     todo = DEFAULT_SET if not specs else [
-        (specs[i], int(specs[i + 1]), int(specs[i + 2]), int(specs[i + 3]), int(specs[i + 4]), int(specs[i + 5]))
-        for i in range(0, len(specs), 6)]
+        (specs[i], *(int(v) for v in specs[i + 1:i + 7]))
+        for i in range(0, len(specs), 7)]
     for spec in todo:
         write_assembly(out, *spec)
 

@@ -1,5 +1,6 @@
 #include "assembly/hierarchical_lod.h"
 
+#include "assembly/cluster_copies.h"
 #include "assembly/parallel_tasks.h"
 
 #include "lod/lod_chain.h"
@@ -251,10 +252,10 @@ double drawCost(const flt::Level& level)
 
 const flt::Mat4d kIdentity{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
 
-// Two clusters are copies when their placements agree to this many steps per unit (matrix
-// entries; places in the model's diagonal): far finer than a viewer could tell, far coarser
-// than the rounding of a file's numbers.
-constexpr double kShapeSteps = 1e6;
+// Two clusters are copies when every part of one lies this share of the model's diagonal or
+// nearer where the other has it: far finer than a viewer could tell, far coarser than the
+// rounding of a file's numbers.
+constexpr double kCopyTolerance = 1e-6;
 
 class HierarchyBuilder {
 public:
@@ -270,8 +271,11 @@ public:
         std::vector<Box3> boxes;
         for (const flt::PartPlacement& p : c_.model.placements)
             boxes.push_back(placedBox(c_.model.definitions[p.definition].levels.front(), p.matrix));
-        nodes_ = buildClusterTree(boxes, options_.tree);
-        original_ = originalsOfCopies();
+        const std::vector<ClusterNode> tree = buildClusterTree(boxes, options_.tree);
+        const double diagonal = tree.empty() ? 0.0 : 2.0 * tree.front().box.halfDiagonal();
+        SharedCopies shared = shareCopies(tree, c_.model.placements, boxes, partReaches(), kCopyTolerance * diagonal);
+        nodes_ = std::move(shared.nodes);
+        copies_ = std::move(shared.copies);
         work_.resize(nodes_.size());
         for (std::size_t n = 0; n < nodes_.size(); ++n) {
             work_[n].centre = nodes_[n].box.center();
@@ -309,38 +313,17 @@ private:
         return switchAtNearestPoint(projectedErrorDistance(error, options_.view), reach);
     }
 
-    // What makes cluster n what it is, about its box's low corner: its shape (how many
-    // placements each node holds, where its children begin and end) and each placement's
-    // part, turned, at its place, rounded far below what a viewer could see.
-    void appendShape(std::size_t n, const Vec3d& corner, double unit, std::vector<long long>& shape) const
+    // How far each part's vertices lie from its own origin, at any level.
+    std::vector<double> partReaches() const
     {
-        shape.push_back(-1 - static_cast<long long>(nodes_[n].items.size()));
-        for (std::size_t p : nodes_[n].items) {
-            const flt::PartPlacement& placement = c_.model.placements[p];
-            shape.push_back(static_cast<long long>(placement.definition));
-            for (int r = 0; r < 3; ++r) {
-                for (int k = 0; k < 3; ++k)
-                    shape.push_back(std::llround(placement.matrix[r][k] * kShapeSteps));
-                shape.push_back(std::llround((placement.matrix[r][3] - corner[r]) / unit * kShapeSteps));
-            }
+        std::vector<double> reach;
+        for (const flt::PartDefinition& definition : c_.model.definitions) {
+            double r = 0;
+            for (const flt::Level& level : definition.levels)
+                r = std::max(r, level.reachFrom({0, 0, 0}));
+            reach.push_back(r);
         }
-        for (std::size_t child : nodes_[n].children)
-            appendShape(child, corner, unit, shape);
-        shape.push_back(std::numeric_limits<long long>::min());
-    }
-
-    // For every cluster, the first cluster it is a copy of (itself when none).
-    std::vector<std::size_t> originalsOfCopies() const
-    {
-        std::vector<std::size_t> original(nodes_.size());
-        const double unit = nodes_.empty() ? 1.0 : std::max(2.0 * nodes_.front().box.halfDiagonal(), 1e-300);
-        std::map<std::vector<long long>, std::size_t> first;
-        for (std::size_t n = 0; n < nodes_.size(); ++n) {
-            std::vector<long long> shape;
-            appendShape(n, nodes_[n].box.lo, unit, shape);
-            original[n] = first.emplace(std::move(shape), n).first->second;
-        }
-        return original;
+        return reach;
     }
 
     // A cluster's proxies are made from its children's: the clusters of one height (the
@@ -354,7 +337,7 @@ private:
                 height[n] = std::max(height[n], height[child] + 1);
         std::vector<std::vector<std::size_t>> made(nodes_.empty() ? 0 : height.front() + 1), moved(made.size());
         for (std::size_t n = nodes_.size(); n-- > 0;)
-            (original_[n] == n ? made : moved)[height[n]].push_back(n);
+            (copies_[n].original == n ? made : moved)[height[n]].push_back(n);
         std::size_t toMake = 0, before = 0;
         for (const std::vector<std::size_t>& same : made)
             toMake += same.size();
@@ -374,24 +357,24 @@ private:
             stats_.inputTriangles += work.mergedTriangles;
     }
 
-    // Cluster n's proxies: its original's, moved by the way their boxes lie apart. Their
-    // chain stopped where the original's parent takes over (farthestDrawn); where this
-    // cluster's parent takes over later, the last level serves on, heavier than it need be
-    // but within its error.
+    // Cluster n's proxies: its original's, moved (and turned) as its parts are. Their chain
+    // stopped where the original's parent takes over (farthestDrawn); where this cluster's
+    // parent takes over later, the last level serves on, heavier than it need be but within
+    // its error.
     void moveCopy(std::size_t n)
     {
-        const ClusterWork& from = work_[original_[n]];
+        const ClusterCopy& copy = copies_[n];
+        const ClusterWork& from = work_[copy.original];
         ClusterWork& work = work_[n];
         work.selected = from.selected;
         work.from = from.from;
         work.candidates = from.candidates;
-        const Vec3d offset{work.centre[0] - from.centre[0], work.centre[1] - from.centre[1],
-                           work.centre[2] - from.centre[2]};
         for (Candidate& candidate : work.candidates) {
-            moveBy(candidate.level, offset);
+            moveBy(candidate.level, copy);
             candidate.level.center = work.centre;
         }
         ++stats_.copied;
+        stats_.turned += copy.turned();
     }
 
     // Cluster n's proxy candidates, the `order`-th of `count` clusters made.
@@ -625,6 +608,22 @@ private:
         }
     }
 
+    static void moveBy(flt::Level& level, const ClusterCopy& copy)
+    {
+        const flt::Mat4d& m = copy.move;
+        const bool turned = copy.turned();
+        for (flt::Part& part : level.parts) {
+            for (Vec3d& p : part.positions)
+                p = transformed(m, p);
+            if (turned)
+                for (flt::Vec3f& v : part.normals)
+                    v = {float(m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2]),
+                         float(m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2]),
+                         float(m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2])};
+        }
+        level.center = transformed(m, level.center);
+    }
+
     static void moveBy(flt::Level& level, const Vec3d& offset)
     {
         for (flt::Part& part : level.parts)
@@ -688,7 +687,7 @@ private:
     const ProgressSpans& progress_;
     std::vector<ClusterNode> nodes_;
     std::vector<std::size_t> parent_;  // the root's: 0
-    std::vector<std::size_t> original_;  // of each cluster, the cluster it is a copy of (or itself)
+    std::vector<ClusterCopy> copies_;  // of each cluster, the cluster it is a copy of (or itself)
     std::vector<ClusterWork> work_;
     HierarchyStats stats_;
 };

@@ -32,16 +32,6 @@ enum class Node { None, Group, Lod, Object, Face, Mesh, Other };
 
 Mat4d identityMatrix() { return {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}; }
 
-Mat4d multiply(const Mat4d& a, const Mat4d& b)
-{
-    Mat4d out{};
-    for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c)
-            for (int k = 0; k < 4; ++k)
-                out[r][c] += a[r][k] * b[k][c];
-    return out;
-}
-
 bool isIdentity(const Mat4d& m) { return m == identityMatrix(); }
 
 

@@ -5,6 +5,16 @@
 
 namespace cadlod::flt {
 
+Mat4d multiply(const Mat4d& a, const Mat4d& b)
+{
+    Mat4d out{};
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+            for (int k = 0; k < 4; ++k)
+                out[r][c] += a[r][k] * b[k][c];
+    return out;
+}
+
 std::size_t Level::triangleCount() const
 {
     std::size_t n = 0;

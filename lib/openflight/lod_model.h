@@ -20,6 +20,8 @@ using Vec3f = std::array<float, 3>;
 using Vec2f = std::array<float, 2>;
 using Triangle = std::array<std::uint32_t, 3>;  // indices into the part's vertex arrays
 using Mat4d = std::array<std::array<double, 4>, 4>;  // [row][column], p' = M p
+
+Mat4d multiply(const Mat4d& a, const Mat4d& b);  // a b: b applied first
 using cadlod::Rgba;                             // 0..1
 
 // One Object: the part's identity (Object name in a Long ID record, colour) and its

@@ -56,6 +56,37 @@ std::string writeGrid(const std::string& dir)
     return path;
 }
 
+// A row of 8 knobs, their pins off centre, DEF'd once and USE'd 8 times 0.6 m apart (so
+// that each row is a cluster); every other row turned half round about its middle, as racks
+// facing across an aisle, the turn written with 8 decimals.
+std::string writeTurnedRows(const std::string& dir)
+{
+    std::ostringstream text;
+    text << "#VRML V2.0 utf8\n";
+    for (int y = 0; y < 8; ++y) {
+        text << "Transform { translation " << (y % 2 ? "0.56 " : "0 ") << 0.6 * y << " 0"
+             << (y % 2 ? " rotation 0 0 1 3.14159265" : "")
+             << " children ";
+        if (y > 0) {
+            text << "USE ROW }\n";
+            continue;
+        }
+        text << "DEF ROW Group { children [\n";
+        for (int x = 0; x < 8; ++x)
+            text << " Transform { translation " << 0.08 * x << " 0 0 children "
+                 << (x == 0 ? "DEF KNOB Group { children [ Shape { geometry Sphere { radius 0.012 } }\n"
+                              "  Transform { translation 0.008 0 0.015 children Shape { appearance Appearance { "
+                              "material Material { diffuseColor 1 0 0 } } geometry Cylinder { radius 0.003 height "
+                              "0.03 } } } ] }"
+                            : "USE KNOB")
+                 << " }\n";
+        text << "] } }\n";
+    }
+    const std::string path = dir + "/turned_rows.wrl";
+    std::ofstream(path) << text.str();
+    return path;
+}
+
 // The same knobs on a 4 x 4 x 2 grid, each written out in full: a file that shares nothing,
 // as CAD systems export an assembly into one file, each part under its own DEF name.
 std::string writeUnsharedGrid(const std::string& dir)
@@ -353,16 +384,21 @@ std::size_t expectEveryProxyWithinItsError(const flt::InstancedModel& model, con
     return measured;
 }
 
-AssemblyConversion convertGrid(const std::string& dir)
+AssemblyConversion convertFile(const std::string& path)
 {
     vrml::ImportOptions keep;
     keep.instances = vrml::Instances::Keep;
-    vrml::ImportResult imported = vrml::importVrmlFile(writeGrid(dir), keep);
+    vrml::ImportResult imported = vrml::importVrmlFile(path, keep);
     if (!imported.ok())
         throw std::runtime_error(imported.error);
     return convertAssembly(
         imported.scene, "grid", PartWelding{},
         [](CoreMesh& m, LevelStore& store, vcg::CallBackPos*) { return chainFrom(m, store, {}); }, true);
+}
+
+AssemblyConversion convertGrid(const std::string& dir)
+{
+    return convertFile(writeGrid(dir));
 }
 
 }  // namespace
@@ -377,6 +413,21 @@ TEST(CliHierarchicalLod, EveryProxyIsWithinItsErrorOfThePartsItReplaces)
     // The grid's clusters repeat each other: most get their proxies moved from a copy's, and
     // are measured where they stand, against their own parts.
     EXPECT_GE(stats.copied, 4u);
+    EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels);
+}
+
+// Rows turned half round are copies of the first row turned: their proxies are the first
+// row's, turned and moved. Measured where they stand against their own parts, whose pins
+// point the other way, they hold their error.
+TEST(CliHierarchicalLod, ProxiesOfTurnedCopiesAreWithinTheirErrorWhereTheyStand)
+{
+    AssemblyConversion c = convertFile(writeTurnedRows(freshDirectory("hlod_turned")));
+    HierarchyOptions options;
+    options.tree.leafItems = 8;
+    const HierarchyStats stats = buildHierarchy(c, options, PartWelding{}, chainFrom);
+    ASSERT_GE(stats.proxyLevels, 2u);
+    EXPECT_GE(stats.turned, 3u);
+    EXPECT_GE(stats.copied, stats.turned + 3);
     EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels);
 }
 
