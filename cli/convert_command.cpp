@@ -291,6 +291,7 @@ nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
             {"clusters", h.clusters},
             {"withProxies", h.proxied},
             {"proxyLevels", h.proxyLevels},
+            {"proxyShapes", h.proxyShapes},
             {"proxyTriangles", h.proxyTriangles},
             {"mergedTriangles", h.inputTriangles},
             {"copiedClusters", h.copied},
@@ -309,11 +310,11 @@ void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
     }
     std::fprintf(stderr,
                  "cadlod: hlod %s: %zu clusters of up to %zu placements (%zu per node%s), %zu with proxies: %zu "
-                 "proxy levels, %zu triangles, merged from %zu; %zu clusters copies of others (%zu turned), their "
-                 "proxies moved\n",
+                 "proxy levels drawing %zu meshes of %zu triangles, merged from %zu; %zu clusters copies of others "
+                 "(%zu turned), drawing their meshes moved\n",
                  a.hlod.c_str(), h.clusters, clusterTree(a).leafItems, clusterTree(a).fanout,
                  clusterTree(a).largeShare > 0 ? ", the largest above" : "", h.proxied,
-                 h.proxyLevels, h.proxyTriangles, h.inputTriangles, h.copied, h.turned);
+                 h.proxyLevels, h.proxyShapes, h.proxyTriangles, h.inputTriangles, h.copied, h.turned);
 }
 
 // An assembly that shares geometry: each distinct part simplified once, placed by instances.

@@ -250,8 +250,6 @@ double drawCost(const flt::Level& level)
     return double(level.triangleCount()) + kDrawCallTriangles * double(drawables(level));
 }
 
-const flt::Mat4d kIdentity{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
-
 // Two clusters are copies when every part of one lies this share of the model's diagonal or
 // nearer where the other has it: far finer than a viewer could tell, far coarser than the
 // rounding of a file's numbers.
@@ -289,7 +287,10 @@ public:
         c_.model.clusters.resize(nodes_.size());
         if (!nodes_.empty())
             placeCluster(0, kNeverCulled, "cluster 1");
+        work_.clear();
         stats_.clusters = nodes_.size();
+        stats_.proxyShapes = c_.model.proxyShapes.size();
+        stats_.proxyTriangles = c_.model.proxyTriangles();
         return stats_;
     }
 
@@ -357,25 +358,23 @@ private:
             stats_.inputTriangles += work.mergedTriangles;
     }
 
-    // Cluster n's proxies: its original's, moved (and turned) as its parts are. Their chain
-    // stopped where the original's parent takes over (farthestDrawn); where this cluster's
-    // parent takes over later, the last level serves on, heavier than it need be but within
-    // its error.
+    // Cluster n's proxies: its original's, moved (and turned) as its parts are
+    // (candidatesOf, moveOf), drawn from the same distances to its centre. Their chain stopped
+    // where the original's parent takes over (farthestDrawn); where this cluster's parent
+    // takes over later, the last level serves on, heavier than it need be but within its
+    // error.
     void moveCopy(std::size_t n)
     {
-        const ClusterCopy& copy = copies_[n];
-        const ClusterWork& from = work_[copy.original];
-        ClusterWork& work = work_[n];
-        work.selected = from.selected;
-        work.from = from.from;
-        work.candidates = from.candidates;
-        for (Candidate& candidate : work.candidates) {
-            moveBy(candidate.level, copy);
-            candidate.level.center = work.centre;
-        }
+        const ClusterWork& from = work_[copies_[n].original];
+        work_[n].selected = from.selected;
+        work_[n].from = from.from;
         ++stats_.copied;
-        stats_.turned += copy.turned();
+        stats_.turned += copies_[n].turned();
     }
+
+    // Cluster n's proxy candidates, where moveOf(n) puts them: a copy's are its original's.
+    const std::vector<Candidate>& candidatesOf(std::size_t n) const { return work_[copies_[n].original].candidates; }
+    const flt::Mat4d& moveOf(std::size_t n) const { return copies_[n].move; }
 
     // Cluster n's proxy candidates, the `order`-th of `count` clusters made.
     void makeProxies(std::size_t n, std::size_t order, std::size_t count, const ProgressSpans& progress)
@@ -464,7 +463,7 @@ private:
                 collectAt(child, centre, from, merger, error);
                 continue;
             }
-            merger.add(proxy->level, kIdentity, false);
+            merger.add(proxy->level, moveOf(child), false);
             error = std::max(error, proxy->error);
         }
     }
@@ -513,7 +512,7 @@ private:
         const ClusterWork& work = work_[n];
         for (std::size_t i = work.selected.size(); i-- > 0;)
             if (work.from[i] <= d)
-                return &work.candidates[work.selected[i]];
+                return &candidatesOf(n)[work.selected[i]];
         return nullptr;
     }
 
@@ -540,14 +539,14 @@ private:
             addPlacement(c_.model.placements[p], allowance, merged, inputError);
         for (std::size_t child : nodes_[n].children) {
             const Candidate* best = nullptr;
-            for (const Candidate& candidate : work_[child].candidates)
+            for (const Candidate& candidate : candidatesOf(child))
                 if (candidate.error <= allowance)
                     best = &candidate;
             if (!best) {
                 gather(child, allowance, merged, inputError);
                 continue;
             }
-            merged.add(best->level, kIdentity, false);
+            merged.add(best->level, moveOf(child), false);
             inputError = std::max(inputError, best->error);
         }
     }
@@ -608,22 +607,6 @@ private:
         }
     }
 
-    static void moveBy(flt::Level& level, const ClusterCopy& copy)
-    {
-        const flt::Mat4d& m = copy.move;
-        const bool turned = copy.turned();
-        for (flt::Part& part : level.parts) {
-            for (Vec3d& p : part.positions)
-                p = transformed(m, p);
-            if (turned)
-                for (flt::Vec3f& v : part.normals)
-                    v = {float(m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2]),
-                         float(m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2]),
-                         float(m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2])};
-        }
-        level.center = transformed(m, level.center);
-    }
-
     static void moveBy(flt::Level& level, const Vec3d& offset)
     {
         for (flt::Part& part : level.parts)
@@ -643,12 +626,10 @@ private:
         out.center = work_[n].centre;
         out.placements = nodes_[n].items;
         out.clusters = nodes_[n].children;
-        out.proxies = keptProxies(work_[n], cutoff, name);
+        keepProxies(n, cutoff, name, out);
         if (!out.proxies.empty()) {
             ++stats_.proxied;
             stats_.proxyLevels += out.proxies.size();
-            for (const flt::Level& l : out.proxies)
-                stats_.proxyTriangles += l.triangleCount();
         }
         const double below = out.proxies.empty() ? cutoff : out.nearRange();
         for (std::size_t i = 0; i < nodes_[n].children.size(); ++i) {
@@ -658,21 +639,35 @@ private:
         }
     }
 
-    std::vector<flt::Level> keptProxies(ClusterWork& work, double cutoff, const std::string& name) const
+    void keepProxies(std::size_t n, double cutoff, const std::string& name, flt::PlacementCluster& out)
     {
-        std::size_t n = 0;
-        while (n < work.from.size() && work.from[n] < cutoff)
-            ++n;
-        std::vector<flt::Level> proxies;
-        for (std::size_t i = 0; i < n; ++i) {
-            flt::Level level = std::move(work.candidates[work.selected[i]].level);
-            level.name = name + " proxy " + std::to_string(i + 1);
-            level.switchOut = work.from[i];
-            level.switchIn = i + 1 < n ? work.from[i + 1] : kNeverCulled;
-            proxies.push_back(std::move(level));
+        const ClusterWork& work = work_[n];
+        std::size_t kept = 0;
+        while (kept < work.from.size() && work.from[kept] < cutoff)
+            ++kept;
+        for (std::size_t i = 0; i < kept; ++i) {
+            flt::Level range;
+            range.name = name + " proxy " + std::to_string(i + 1);
+            range.switchOut = work.from[i];
+            range.switchIn = i + 1 < kept ? work.from[i + 1] : kNeverCulled;
+            range.center = work.centre;
+            out.shapes.push_back(shapeOf(copies_[n].original, work.selected[i], range.name));
+            out.proxies.push_back(std::move(range));
         }
-        work.candidates.clear();
-        return proxies;
+        out.move = moveOf(n);
+    }
+
+    // Candidate k of cluster n, an original, as a proxy shape of the model: made the first
+    // time a cluster keeps it (named after that cluster's proxy), shared by its copies.
+    std::size_t shapeOf(std::size_t n, std::size_t k, const std::string& name)
+    {
+        const auto [at, added] = shapes_.emplace(std::make_pair(n, k), c_.model.proxyShapes.size());
+        if (added) {
+            flt::Level shape = std::move(work_[n].candidates[k].level);
+            shape.name = name;
+            c_.model.proxyShapes.push_back(std::move(shape));
+        }
+        return at->second;
     }
 
     static double distance(const Vec3d& a, const Vec3d& b)
@@ -689,6 +684,7 @@ private:
     std::vector<std::size_t> parent_;  // the root's: 0
     std::vector<ClusterCopy> copies_;  // of each cluster, the cluster it is a copy of (or itself)
     std::vector<ClusterWork> work_;
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> shapes_;  // (cluster, candidate) -> proxy shape
     HierarchyStats stats_;
 };
 

@@ -85,8 +85,9 @@ LodChainOptions proxyChainOptions(LodChainOptions options, int triangles, const 
 struct HierarchyStats {
     std::size_t clusters = 0;
     std::size_t proxied = 0;         // clusters with at least one proxy
-    std::size_t proxyLevels = 0;
-    std::size_t proxyTriangles = 0;
+    std::size_t proxyLevels = 0;     // LOD records, a copy's as well
+    std::size_t proxyShapes = 0;     // meshes they draw, a copy's shared with its original's
+    std::size_t proxyTriangles = 0;  // of those shapes, each once
     std::size_t inputTriangles = 0;  // merged into proxies, before simplifying
     std::size_t copied = 0;          // clusters whose proxies were moved from a copy's, not made
     std::size_t turned = 0;          // of those, copies turned as well as moved

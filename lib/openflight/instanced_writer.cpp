@@ -31,6 +31,10 @@ public:
     {
         for (const PartPlacement& p : model.placements)
             ++uses_[{p.definition, p.mirrored()}];
+        shapeUses_.assign(model.proxyShapes.size(), 0);
+        for (const PlacementCluster& c : model.clusters)
+            for (std::size_t shape : c.shapes)
+                ++shapeUses_[shape];
     }
 
     bool write(std::string& error)
@@ -82,11 +86,72 @@ private:
             return false;
         if (proxied) {
             writePop(w_);
-            levels_.writeLevels(c.proxies, true);
-            stats_.proxyLevels += c.proxies.size();
+            writeProxies(c);
         }
         writePop(w_);
         ++stats_.clusters;
+        return true;
+    }
+
+    // Each proxy's LOD record, holding its shape: written there when no other cluster draws
+    // it, else referenced (the Instance Definition written before its first reference).
+    void writeProxies(const PlacementCluster& c)
+    {
+        const bool moved = !isIdentity(c.move);
+        for (std::size_t i = 0; i < c.proxies.size(); ++i) {
+            const std::size_t shape = c.shapes[i];
+            const bool shared = shapeUses_[shape] > 1 && defineShapeOnce(shape);
+            const Level& range = c.proxies[i];
+            writeLod(w_, range.name, range.switchIn, range.switchOut, range.center);
+            writeLongIdIfNeeded(w_, range.name);
+            writePush(w_);
+            ++stats_.lodNodes;
+            if (moved) {
+                const std::string name = range.name + " moved";
+                writeGroup(w_, name);
+                writeLongIdIfNeeded(w_, name);
+                writeMatrix(w_, c.move);
+                writePush(w_);
+            }
+            if (shared) {
+                writeInstanceReference(w_, shapeNumbers_.at(shape));
+                ++stats_.instanceReferences;
+            } else {
+                levels_.writeGeometry(model_.proxyShapes[shape]);
+            }
+            if (moved)
+                writePop(w_);
+            writePop(w_);
+        }
+        stats_.proxyLevels += c.proxies.size();
+    }
+
+    // The Instance Definition of a proxy shape, before its first reference; false when the
+    // 16-bit instance numbers are all taken (the shape is then written at each use).
+    bool defineShapeOnce(std::size_t shape)
+    {
+        if (shapeNumbers_.count(shape))
+            return true;
+        const int number = nextNumber();
+        if (number > kMaxInstanceNumber)
+            return false;
+        shapeNumbers_[shape] = number;
+        writeInstanceDefinition(w_, number);
+        writePush(w_);
+        levels_.writeGeometry(model_.proxyShapes[shape]);
+        writePop(w_);
+        ++stats_.instanceDefinitions;
+        return true;
+    }
+
+    int nextNumber() const { return int(numbers_.size() + shapeNumbers_.size()) + 1; }
+
+    static bool isIdentity(const Mat4d& m)
+    {
+        for (int r = 0; r < 4; ++r)
+            for (int c = 0; c < 4; ++c)
+                if (m[r][c] != (r == c ? 1.0 : 0.0))
+                    return false;
         return true;
     }
 
@@ -120,7 +185,7 @@ private:
             number = known->second;
             return true;
         }
-        number = int(numbers_.size()) + 1;
+        number = nextNumber();
         if (number > kMaxInstanceNumber) {
             error = "more than " + std::to_string(kMaxInstanceNumber) + " shared parts: instance numbers are 16-bit";
             return false;
@@ -157,6 +222,8 @@ private:
     LevelWriter levels_;
     std::map<WrittenForm, int> uses_;
     std::map<WrittenForm, int> numbers_;
+    std::vector<int> shapeUses_;             // per proxy shape, the clusters that draw it
+    std::map<std::size_t, int> shapeNumbers_;  // the proxy shapes defined, their instance numbers
 };
 
 // A tree below clusters[0] that holds every placement once, its proxies' ranges usable.
@@ -178,10 +245,17 @@ bool validateClusters(const InstancedModel& model, std::string& error)
                         ", unknown or already held";
                 return false;
             }
-        if (!cluster.proxies.empty() && !validateLevels(cluster.proxies, error)) {
-            error = "cluster " + cluster.name + ": " + error;
+        if (cluster.shapes.size() != cluster.proxies.size()) {
+            error = "cluster " + cluster.name + " has " + std::to_string(cluster.proxies.size()) + " proxies and " +
+                    std::to_string(cluster.shapes.size()) + " shapes";
             return false;
         }
+        for (std::size_t shape : cluster.shapes)
+            if (shape >= model.proxyShapes.size()) {
+                error = "cluster " + cluster.name + " draws proxy shape " + std::to_string(shape) + " of " +
+                        std::to_string(model.proxyShapes.size());
+                return false;
+            }
     }
     if (std::find(placed.begin(), placed.end(), 0) != placed.end()) {
         error = "a placement is in no cluster";
@@ -207,6 +281,10 @@ bool validate(const InstancedModel& model, const WriteOptions& options, std::str
     }
     if (!validateClusters(model, error))
         return false;
+    if (!model.proxyShapes.empty() && !validateLevels(model.proxyShapes, error)) {
+        error = "proxy shapes: " + error;
+        return false;
+    }
     for (const PartPlacement& p : model.placements)
         if (p.definition >= model.definitions.size()) {
             error = "placement " + p.name + " refers to part " + std::to_string(p.definition) + " of " +
@@ -240,9 +318,8 @@ std::size_t InstancedModel::placedTriangles() const
 std::size_t InstancedModel::proxyTriangles() const
 {
     std::size_t n = 0;
-    for (const PlacementCluster& c : clusters)
-        for (const Level& l : c.proxies)
-            n += l.triangleCount();
+    for (const Level& l : proxyShapes)
+        n += l.triangleCount();
     return n;
 }
 

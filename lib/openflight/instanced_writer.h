@@ -5,7 +5,9 @@
 //     Group Matrix Push { Instance Reference n | levels } Pop
 //   }* Pop Pop
 // or, with clusters, Group Push { LOD near Push {clusters, placements} Pop, LOD proxy* } Pop
-// in place of the list of placements.
+// in place of the list of placements. A proxy drawn by one cluster only is written inside its
+// LOD record; one a cluster and its copies draw is an Instance Definition, referenced from
+// each one's LOD record (under a Group with the copy's Matrix).
 // A part placed once is written inside its Group. A part placed in a mirror (negative
 // determinant) has a definition of its own, its triangles turned round, so that its faces
 // stay outward. OSG drops a Matrix on an Instance Reference, so it goes on the Group.
@@ -41,7 +43,12 @@ struct PartPlacement {
 struct PlacementCluster {
     std::string name;
     Vec3d center{0, 0, 0};
-    std::vector<Level> proxies;           // finest first, in model coordinates, contiguous ranges
+    // Finest first, contiguous ranges: each one's name, range and centre; no parts. Proxy i
+    // draws the model's proxyShapes[shapes[i]] moved by `move`: a cluster that is a copy of
+    // another (moved and turned alike) draws that one's shapes.
+    std::vector<Level> proxies;
+    std::vector<std::size_t> shapes;
+    Mat4d move{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
     std::vector<std::size_t> clusters;    // the clusters below, by index (greater than this one's)
     std::vector<std::size_t> placements;  // the placements in it, by index
 
@@ -56,10 +63,11 @@ struct InstancedModel {
     // Empty: every placement right under the root. Else [0] is the root cluster, and every
     // placement is in exactly one cluster.
     std::vector<PlacementCluster> clusters;
+    std::vector<Level> proxyShapes;  // the clusters' proxies' geometry, in model coordinates
 
     std::size_t distinctTriangles() const;  // every definition's levels once
     std::size_t placedTriangles() const;    // the finest level of every placement
-    std::size_t proxyTriangles() const;     // every cluster's proxies
+    std::size_t proxyTriangles() const;     // every proxy shape once
 };
 
 struct InstancedWriteStats : WriteStats {

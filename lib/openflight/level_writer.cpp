@@ -111,6 +111,12 @@ void LevelWriter::writeLevels(const std::vector<Level>& levels, bool lodRecords,
         writeLevel(levels[l], l, lodRecords);
 }
 
+void LevelWriter::writeGeometry(const Level& level)
+{
+    reversed_ = false;
+    writeLevel(level, 0, false);
+}
+
 void LevelWriter::writeLevel(const Level& level, std::size_t index, bool lod)
 {
     if (lod) {

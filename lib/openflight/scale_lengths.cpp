@@ -46,7 +46,10 @@ void scaleLengths(InstancedModel& model, double scale)
     for (PlacementCluster& cluster : model.clusters) {
         scalePoint(cluster.center, scale);
         scaleLevels(cluster.proxies, scale);
+        for (int row = 0; row < 3; ++row)
+            cluster.move[row][3] *= scale;
     }
+    scaleLevels(model.proxyShapes, scale);
 }
 
 }  // namespace cadlod::flt

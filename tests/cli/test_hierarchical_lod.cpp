@@ -145,9 +145,17 @@ TEST(CliHierarchicalLod, HoldsTheErrorBoundAndDrawsEveryPlacementOnceWhereverThe
     const std::string input = writeGrid(dir);
     const CliRun run = runCadlod({"convert", input, "-o", dir + "/grid.flt", "--cluster-parts", "16", "--report", dir + "/grid.json"});
     ASSERT_EQ(run.exitCode, 0) << run.stderrText;
-    const nlohmann::json hlod = nlohmann::json::parse(readFile(dir + "/grid.json")).at("hlod");
+    const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/grid.json"));
+    const nlohmann::json& hlod = report.at("hlod");
     EXPECT_GE(hlod.at("clusters").get<int>(), 9);  // 128 placements, at most 16 to a leaf
     EXPECT_GE(hlod.at("withProxies").get<int>(), 2);
+    // The clusters that are copies of others draw those ones' proxies: each written once, as
+    // an Instance Definition, and referenced beside the placements' references.
+    EXPECT_GE(hlod.at("copiedClusters").get<int>(), 4);
+    EXPECT_LT(hlod.at("proxyShapes").get<int>(), hlod.at("proxyLevels").get<int>());
+    const nlohmann::json& output = report.at("output");
+    EXPECT_GT(output.at("instanceDefinitions").get<int>(), report.at("input").at("parts").get<int>());
+    EXPECT_GT(output.at("instanceReferences").get<int>(), output.at("placements").get<int>());
 
     const OsgViewProbe osg(dir + "/grid.flt", "grid");
     ASSERT_TRUE(osg.loaded());
@@ -313,21 +321,27 @@ namespace {
 
 using flt::Vec3d;
 
-// A part's finest level where a placement puts it.
-flt::Level placedLevel(const flt::InstancedModel& model, const flt::PartPlacement& p)
+// A level where a matrix puts it.
+flt::Level moved(flt::Level level, const flt::Mat4d& m)
 {
-    flt::Level level = model.definitions[p.definition].levels.front();
-    for (flt::Part& part : level.parts) {
-        if (p.mirrored())
-            for (flt::Triangle& t : part.triangles)
-                std::swap(t[1], t[2]);
+    for (flt::Part& part : level.parts)
         for (Vec3d& v : part.positions) {
             Vec3d w{};
             for (int r = 0; r < 3; ++r)
-                w[r] = p.matrix[r][0] * v[0] + p.matrix[r][1] * v[1] + p.matrix[r][2] * v[2] + p.matrix[r][3];
+                w[r] = m[r][0] * v[0] + m[r][1] * v[1] + m[r][2] * v[2] + m[r][3];
             v = w;
         }
-    }
+    return level;
+}
+
+// A part's finest level where a placement puts it.
+flt::Level placedLevel(const flt::InstancedModel& model, const flt::PartPlacement& p)
+{
+    flt::Level level = moved(model.definitions[p.definition].levels.front(), p.matrix);
+    for (flt::Part& part : level.parts)
+        if (p.mirrored())
+            for (flt::Triangle& t : part.triangles)
+                std::swap(t[1], t[2]);
     return level;
 }
 
@@ -371,12 +385,14 @@ std::size_t expectEveryProxyWithinItsError(const flt::InstancedModel& model, con
         CoreMesh parts;
         addPlacedParts(model, n, parts);
         readyForMeasure(parts);
-        for (const flt::Level& proxy : cluster.proxies) {
+        for (std::size_t i = 0; i < cluster.proxies.size(); ++i) {
+            const flt::Level& proxy = cluster.proxies[i];
+            const flt::Level shape = moved(model.proxyShapes.at(cluster.shapes.at(i)), cluster.move);
             CoreMesh drawn;
-            mesh_io::levelToMesh(proxy, drawn);
+            mesh_io::levelToMesh(shape, drawn);
             readyForMeasure(drawn);
             const double error = symmetricHausdorff(parts, drawn, 20000).max();
-            const double reach = proxy.reachFrom(cluster.center);
+            const double reach = shape.reachFrom(cluster.center);
             EXPECT_LE(error, 1.05 * (proxy.switchOut - reach) * pixelAtOne) << proxy.name;
             ++measured;
         }

@@ -232,6 +232,71 @@ TEST(InstancedWriter, OurReaderPlacesEveryInstanceAsOsgDoes)
     std::remove(path.c_str());
 }
 
+// Two clusters of two cubes, the second a copy of the first turned half round about z and
+// moved 20 along x, each drawn (from up close, for the probe) as one proxy shape: a box on
+// x in [1, 3]. The shape is written once and OSG draws it where each cluster's move puts it.
+flt::InstancedModel twoClustersOneProxyShape()
+{
+    flt::InstancedModel m;
+    m.name = "asm";
+    m.definitions = {twoLevelCube()};
+    m.placements = {placed("A/1", 0), placed("A/2", 4), placed("B/1", 20), placed("B/2", 16)};
+    flt::Level shape;
+    shape.parts.push_back(cube("proxy", {2, 0, 0}));
+    m.proxyShapes = {shape};
+    m.clusters.resize(3);
+    m.clusters[0].name = "c";
+    m.clusters[0].clusters = {1, 2};
+    for (std::size_t k : {1u, 2u}) {
+        flt::PlacementCluster& c = m.clusters[k];
+        c.name = "c." + std::to_string(k);
+        c.placements = {2 * k - 2, 2 * k - 1};
+        flt::Level range;
+        range.name = c.name + " proxy 1";
+        range.switchOut = 0;
+        range.switchIn = 1e30;
+        c.proxies = {range};
+        c.shapes = {0};
+    }
+    m.clusters[2].move = {{{-1, 0, 0, 20}, {0, -1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+    m.clusters[2].center = {18, 0, 0};
+    m.clusters[2].proxies[0].center = {18, 0, 0};
+    return m;
+}
+
+TEST(InstancedWriter, AProxyShapeOfACopyIsWrittenOnceAndDrawnWhereItsMovePutsIt)
+{
+    flt::InstancedWriteStats stats;
+    const std::string path = writeToTemp(twoClustersOneProxyShape(), stats);
+    EXPECT_EQ(stats.instanceDefinitions, 2u);      // the cube, the proxy shape
+    EXPECT_EQ(stats.instanceReferences, 4u + 2u);  // the placements, the proxies
+    const OsgAssemblyProbe osg = probeAssemblyWithOsg(path, "asm");
+    ASSERT_TRUE(osg.loaded);
+    ASSERT_EQ(osg.named.count("c.1 proxy 1"), 1u);
+    ASSERT_EQ(osg.named.count("c.2 proxy 1"), 1u);
+    const OsgNamedNode& original = osg.named.at("c.1 proxy 1");
+    const OsgNamedNode& copy = osg.named.at("c.2 proxy 1");
+    EXPECT_EQ(original.triangles, 12u);
+    EXPECT_EQ(copy.triangles, 12u);
+    EXPECT_NEAR(original.min[0], 1, 1e-5);
+    EXPECT_NEAR(original.max[0], 3, 1e-5);
+    EXPECT_NEAR(copy.min[0], 17, 1e-5);
+    EXPECT_NEAR(copy.max[0], 19, 1e-5);
+    std::remove(path.c_str());
+
+    // Drawn by one cluster only, the shape is written in place.
+    flt::InstancedModel one = twoClustersOneProxyShape();
+    one.clusters[2].proxies.clear();
+    one.clusters[2].shapes.clear();
+    const std::string alone = writeToTemp(one, stats);
+    EXPECT_EQ(stats.instanceDefinitions, 1u);
+    EXPECT_EQ(stats.instanceReferences, 4u);
+    const OsgAssemblyProbe osgAlone = probeAssemblyWithOsg(alone, "asm");
+    ASSERT_EQ(osgAlone.named.count("c.1 proxy 1"), 1u);
+    EXPECT_NEAR(osgAlone.named.at("c.1 proxy 1").max[0], 3, 1e-5);
+    std::remove(alone.c_str());
+}
+
 TEST(InstancedWriter, AReferenceWithoutItsDefinitionIsAnError)
 {
     std::vector<std::uint8_t> bytes;
