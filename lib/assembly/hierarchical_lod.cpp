@@ -385,7 +385,7 @@ private:
             return;  // its one part or cluster is drawn as itself
         if (options_.fewestCalls) {
             addMergedCandidate(n);
-            if (placementsBelow(n) < kSimplifiedClusterPlacements) {
+            if (placementsBelow(n) < kSimplifiedClusterPlacements || depthOf(n) % kSimplifiedEveryDepths != 0) {
                 select(n);
                 return;
             }
@@ -420,6 +420,14 @@ private:
                                 distance(parent.center(), work_[n].centre);
         const double farthest = takeOver - work_[n].radius - projectedErrorDistance(inputError, options_.view);
         return std::max(farthest, kParentTakeOverMargin * first);
+    }
+
+    std::size_t depthOf(std::size_t n) const
+    {
+        std::size_t depth = 0;
+        for (; n != 0; n = parent_[n])
+            ++depth;
+        return depth;
     }
 
     std::size_t placementsBelow(std::size_t n) const

@@ -46,13 +46,20 @@ struct HierarchyOptions {
     // Fewest draw calls near the viewer: every cluster is also drawn, from six radii off, as
     // its parts merged unchanged, each at the level it shows from its nearest possible
     // distance (so that every part keeps its own error), in one draw call; only clusters of
-    // kSimplifiedClusterPlacements or more also get simplified proxies. Merging gives up
+    // kSimplifiedClusterPlacements or more, at every kSimplifiedEveryDepths, also get
+    // simplified proxies. Merging gives up
     // instancing: the file holds about the expanded model's geometry again.
     bool fewestCalls = false;
 };
 
 // With fewestCalls, the fewest placements a cluster holds to get simplified proxies too.
 inline constexpr std::size_t kSimplifiedClusterPlacements = 48;
+
+// With fewestCalls, only clusters at every this many depths below the root get simplified
+// proxies: in a tree of two nodes below each cluster, one such cluster per four times the
+// placements. Where a cluster has none, its children's proxies stand in, two draw calls
+// where there would be one, and the whole model is not simplified once per depth.
+inline constexpr std::size_t kSimplifiedEveryDepths = 2;
 
 // With fewestCalls, the tree: leaves of two placements, two nodes below a cluster, and a
 // placement more than half as large as its group kept above the split, so that clusters are

@@ -459,6 +459,11 @@ TEST(CliHierarchicalLod, EveryMergedProxyIsWithinItsErrorOfThePartsItReplaces)
     const HierarchyStats stats = buildHierarchy(c, options, PartWelding{}, chainFrom);
     ASSERT_GE(stats.proxyLevels, 100u);  // a merged proxy on most of the 127 clusters
     EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels);
+    // Of the clusters of 48 placements or more, the root (128) is simplified as well; its
+    // children (64 each), one depth below, are drawn merged only.
+    EXPECT_GE(c.model.clusters[0].proxies.size(), 2u);
+    for (std::size_t child : c.model.clusters[0].clusters)
+        EXPECT_LE(c.model.clusters[child].proxies.size(), 1u) << c.model.clusters[child].name;
 }
 
 }  // namespace cadlod::test
