@@ -11,8 +11,10 @@ With no assembly given it writes the bench's set:
   plant      10 racks x 10 boards x 100 parts = 10,000 placements of 64 distinct parts
   hall        8 racks x 10 boards x 100 parts =  8,000 placements of 64 distinct parts,
               in two rows across an aisle, the second row turned half round
+  yard        the hall with its second row's racks set askew (turned 0.5 radian),
+              the racks 50 inches apart so that each stands clear of the next
 Racks stand in ROWS rows; every other row is turned half round about the vertical, as
-racks that face each other across an aisle.
+racks that face each other across an aisle (the yard turns them by TURN, its racks GAP apart).
 Units are KiCad's (0.1 inch): convert with --unit 0.1in. Deterministic for a seed.
 """
 import os
@@ -25,7 +27,7 @@ FAMILIES = ["Capacitor_SMD", "Resistor_SMD", "Package_SO", "Package_QFP", "Conne
             "Package_TO_SOT_SMD", "Crystal", "Inductor_SMD", "Button_Switch_SMD", "Diode_SMD", "LED_SMD",
             "Capacitor_THT", "Connector_USB", "Package_DIP", "Relay_THT"]
 DEFAULT_SET = [("cabinet", 3, 8, 80, 48, 1, 1), ("cabinet_q", 1, 4, 80, 48, 1, 1), ("plant", 10, 10, 100, 64, 2, 1),
-               ("hall", 8, 10, 100, 64, 3, 2)]
+               ("hall", 8, 10, 100, 64, 3, 2), ("yard", 8, 10, 100, 64, 3, 2, "0.5", 500)]
 
 
 def library_parts(distinct, rng):
@@ -68,7 +70,7 @@ def board_text(name, parts, per_board, rng, pitch):
     return "\n".join(lines)
 
 
-def write_assembly(out, name, racks, boards, per_board, distinct, seed, rows):
+def write_assembly(out, name, racks, boards, per_board, distinct, seed, rows, turn="3.14159265", gap=100):
     rng = random.Random(seed)
     folder = os.path.join(out, name)
     os.makedirs(os.path.join(folder, "parts"), exist_ok=True)
@@ -90,12 +92,12 @@ def write_assembly(out, name, racks, boards, per_board, distinct, seed, rows):
                     % (b + 1, b * 40.0, body))
     text.append("] }")
     per_row = (racks + rows - 1) // rows
-    row_pitch = board_size + boards * 40.0 + 200
+    row_pitch = board_size + boards * 40.0 + 2 * gap
     for r in range(1, racks):
         row, place = divmod(r, per_row)
-        turn = " rotation 0 1 0 3.14159265" if row % 2 else ""
+        rotation = " rotation 0 1 0 " + turn if row % 2 else ""
         text.append("DEF Rack_%d Transform { translation %g 0 %g%s children USE RACK }"
-                    % (r + 1, place * (board_size + 100), row * row_pitch, turn))
+                    % (r + 1, place * (board_size + gap), row * row_pitch, rotation))
     path = os.path.join(folder, name + ".wrl")
     with open(path, "w") as f:
         f.write("\n".join(text) + "\n")

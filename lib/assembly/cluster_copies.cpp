@@ -1,7 +1,6 @@
 #include "assembly/cluster_copies.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -10,29 +9,62 @@ namespace cadlod {
 namespace {
 
 using flt::Mat4d;
-using Turn = std::array<std::array<int, 3>, 3>;
 
-int determinant(const Turn& t)
+double determinant3(const Mat4d& m)
 {
-    return t[0][0] * (t[1][1] * t[2][2] - t[1][2] * t[2][1]) - t[0][1] * (t[1][0] * t[2][2] - t[1][2] * t[2][0]) +
-           t[0][2] * (t[1][0] * t[2][1] - t[1][1] * t[2][0]);
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
 }
 
-// The 24 turns that map the axes onto the axes (no mirror), the identity first: a plain
-// move is tried before any turn.
-std::vector<Turn> axisTurns()
+// The placement undone: m's 3x3 part inverted (its cofactors over its determinant, which
+// is not zero for a placement), its shift turned back.
+Mat4d inverse(const Mat4d& m)
 {
-    const int orders[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-    std::vector<Turn> turns;
-    for (const auto& order : orders)
-        for (int signs = 0; signs < 8; ++signs) {
-            Turn t{};
-            for (int r = 0; r < 3; ++r)
-                t[r][order[r]] = (signs >> r & 1) ? -1 : 1;
-            if (determinant(t) == 1)
-                turns.push_back(t);
+    const double det = determinant3(m);
+    Mat4d out{};
+    out[3][3] = 1;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+            const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+            out[r][c] = (m[r1][c1] * m[r2][c2] - m[r1][c2] * m[r2][c1]) / det;
         }
-    return turns;
+    for (int r = 0; r < 3; ++r)
+        out[r][3] = -(out[r][0] * m[0][3] + out[r][1] * m[1][3] + out[r][2] * m[2][3]);
+    return out;
+}
+
+// A turn part this near to mapping axes onto axes is taken as doing so exactly (a half turn
+// written "3.14159"); placedAlike then says whether the parts still land.
+constexpr double kAxisSlack = 1e-5;
+
+// `move` with its turn made exactly the axis turn it nearly is, about the centre of box
+// `from`, then shifted to the centre of box `to` (a turn that maps axes onto axes maps the
+// one box onto the other); unchanged when its turn is no axis turn.
+Mat4d snappedToAxes(Mat4d move, const Box3& from, const Box3& to)
+{
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            if (std::abs(move[r][c] - std::round(move[r][c])) > kAxisSlack)
+                return move;
+    const auto a = from.center();
+    const auto b = to.center();
+    for (int r = 0; r < 3; ++r) {
+        move[r][3] = b[r];
+        for (int c = 0; c < 3; ++c) {
+            move[r][c] = std::round(move[r][c]) + 0.0;  // no negative zero
+            move[r][3] -= move[r][c] * a[c];
+        }
+    }
+    return move;
+}
+
+bool isPlainMove(const Mat4d& m)
+{
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            if (m[r][c] != (r == c ? 1.0 : 0.0))
+                return false;
+    return true;
 }
 
 // How far apart two placements of one part put its vertices, at most (`reach`: how far
@@ -56,7 +88,7 @@ public:
     CopySharing(const std::vector<ClusterNode>& tree, const std::vector<flt::PartPlacement>& placements,
                 const std::vector<Box3>& placedBoxes, const std::vector<double>& partReach, double tolerance)
         : tree_(tree), placements_(placements), placedBoxes_(placedBoxes), partReach_(partReach),
-          tolerance_(tolerance), turns_(axisTurns()), below_(tree.size()), landing_(placements.size())
+          tolerance_(tolerance), below_(tree.size()), landing_(placements.size())
     {
         for (std::size_t n = tree_.size(); n-- > 0;)  // a child's index is above its parent's
             gatherBelow(n);
@@ -85,15 +117,11 @@ private:
         std::vector<std::size_t>& same = originals_[kind(n)];
         const std::vector<std::size_t> mine = byPartAndX(n);
         for (std::size_t o : same)
-            for (const Turn& turn : turns_) {
-                if (!boxesAlike(out_.nodes[o].box, tree_[n].box, turn))
-                    continue;
-                const Mat4d move = moveFor(out_.nodes[o].box, tree_[n].box, turn);
+            for (const Mat4d& move : movesOnto(o, n, mine))
                 if (placedAlike(treeNodeOf_[o], move, mine)) {
                     image(o, at, move);
                     return at;
                 }
-            }
         same.push_back(at);
         treeNodeOf_[at] = n;
         out_.nodes[at].items = tree_[n].items;
@@ -159,31 +187,42 @@ private:
         return pa.matrix[0][3] < pb.matrix[0][3];
     }
 
-    bool boxesAlike(const Box3& from, const Box3& to, const Turn& turn) const
+    // The moves that may make tree node n, its placements `mine` (sorted by part and x), a
+    // copy of original o (in the output): each puts o's first placement of its rarest part
+    // onto one of n's of that part, as a turn (no mirror: a mirrored proxy would show its
+    // faces inside out) and a shift. Plain moves first, so that a copy that is also
+    // symmetric is found moved, not turned.
+    std::vector<Mat4d> movesOnto(std::size_t o, std::size_t n, const std::vector<std::size_t>& mine) const
     {
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c)
-                if (turn[r][c] != 0 &&
-                    std::abs((to.hi[r] - to.lo[r]) - (from.hi[c] - from.lo[c])) > 2 * tolerance_)
-                    return false;
-        return true;
+        const std::vector<std::size_t>& theirs = below_[treeNodeOf_.at(o)];
+        const std::size_t part = rarestPart(theirs);
+        const std::size_t anchor = *std::find_if(theirs.begin(), theirs.end(),
+                                                 [&](std::size_t p) { return placements_[p].definition == part; });
+        const Mat4d undo = inverse(placements_[anchor].matrix);
+        std::vector<Mat4d> moves;
+        for (std::size_t q : mine) {
+            if (placements_[q].definition != part)
+                continue;
+            const Mat4d move =
+                snappedToAxes(flt::multiply(placements_[q].matrix, undo), out_.nodes[o].box, tree_[n].box);
+            if (determinant3(move) > 0 && std::find(moves.begin(), moves.end(), move) == moves.end())
+                moves.push_back(move);
+        }
+        std::stable_partition(moves.begin(), moves.end(), isPlainMove);
+        return moves;
     }
 
-    // The turn about the centre of box `from`, then the move from there to the centre of `to`.
-    static Mat4d moveFor(const Box3& from, const Box3& to, const Turn& turn)
+    // Of `placements`, the part placed fewest times (the lowest-numbered of those).
+    std::size_t rarestPart(const std::vector<std::size_t>& placements) const
     {
-        const auto a = from.center();
-        const auto b = to.center();
-        Mat4d move{};
-        move[3][3] = 1;
-        for (int r = 0; r < 3; ++r) {
-            move[r][3] = b[r];
-            for (int c = 0; c < 3; ++c) {
-                move[r][c] = turn[r][c];
-                move[r][3] -= turn[r][c] * a[c];
-            }
-        }
-        return move;
+        std::map<std::size_t, std::size_t> count;
+        for (std::size_t p : placements)
+            ++count[placements_[p].definition];
+        auto rarest = count.begin();
+        for (auto it = count.begin(); it != count.end(); ++it)
+            if (it->second < rarest->second)
+                rarest = it;
+        return rarest->first;
     }
 
     // Every placement below tree node o, moved, lands on a placement of the same part among
@@ -223,7 +262,6 @@ private:
     const std::vector<Box3>& placedBoxes_;
     const std::vector<double>& partReach_;
     const double tolerance_;
-    const std::vector<Turn> turns_;
     std::vector<std::vector<std::size_t>> below_;     // per tree node
     std::vector<std::size_t> landing_;                // per placement: where the last match put it
     std::map<std::vector<std::size_t>, std::vector<std::size_t>> originals_;  // output nodes, by kind

@@ -2,9 +2,10 @@
 // maybe turned, as a rack USE'd again further along a row or turned to face it across an
 // aisle. A copy's proxies are its original's, moved the same way: the move is rigid, so
 // they keep their error. A copy is cut into clusters as its original is, so that its
-// clusters are copies too: the cuts of a turned rack would fall elsewhere. Turns are those
-// that map axes onto axes (a cluster's box is then its original's box turned); placements
-// agree within a tolerance, so a turn written with a few decimals ("3.14159") still matches.
+// clusters are copies too: the cuts of a turned rack would fall elsewhere. Any turn is found
+// (a rack set askew), but no mirror; placements agree within a tolerance, and a turn within
+// a hair of mapping axes onto axes is taken as doing so, so that a half turn written with a
+// few decimals ("3.14159") still matches.
 #pragma once
 
 #include "lod/cluster_tree.h"
@@ -28,7 +29,7 @@ struct SharedCopies {
 };
 
 // The tree again, each copy given its original's shape: a node whose placements a move (a
-// turn that maps axes onto axes, then a shift) puts onto those of a node met before it,
+// turn, then a shift) puts onto those of a node met before it,
 // every part's vertices within `tolerance` of where the node has them, gets that node's
 // subtree, moved, in place of its own. Its nodes are then copies too, at the same height
 // as their originals. An original is never itself a copy. `placedBoxes[p]`: placement p's

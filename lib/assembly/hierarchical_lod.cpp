@@ -275,10 +275,8 @@ public:
         nodes_ = std::move(shared.nodes);
         copies_ = std::move(shared.copies);
         work_.resize(nodes_.size());
-        for (std::size_t n = 0; n < nodes_.size(); ++n) {
-            work_[n].centre = nodes_[n].box.center();
-            work_[n].radius = nodes_[n].box.halfDiagonal();
-        }
+        for (std::size_t n = 0; n < nodes_.size(); ++n)
+            centreOn(n);
         parent_.assign(nodes_.size(), 0);
         for (std::size_t n = 0; n < nodes_.size(); ++n)
             for (std::size_t child : nodes_[n].children)
@@ -295,6 +293,20 @@ public:
     }
 
 private:
+    // An original's centre and radius are its box's; a copy's are its original's, moved, as
+    // its proxies are: a copy turned by other than quarter turns has a larger box.
+    void centreOn(std::size_t n)
+    {
+        const std::size_t original = copies_[n].original;
+        if (original == n) {
+            work_[n].centre = nodes_[n].box.center();
+            work_[n].radius = nodes_[n].box.halfDiagonal();
+            return;
+        }
+        work_[n].centre = transformed(copies_[n].move, work_[original].centre);
+        work_[n].radius = work_[original].radius;
+    }
+
     // Every level of every part (and of its chunks) one drawable: near the eye the parts are
     // drawn one by one, and their colours would multiply the draw calls.
     void drawPartsInOneCall()

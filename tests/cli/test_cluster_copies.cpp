@@ -1,6 +1,6 @@
 // Clusters that are copies of others (cluster_copies.h): moved, or turned and moved as a
-// rack turned to face an aisle, with turns written to a few decimals; and clusters alike in
-// parts and box that are not copies.
+// rack turned to face an aisle, with turns written to a few decimals, or set askew; and
+// clusters alike in parts that are not copies.
 #include "assembly/cluster_copies.h"
 
 #include <gtest/gtest.h>
@@ -140,6 +140,35 @@ TEST(ClusterCopies, AClusterTurnedAndMovedIsACopyWithItsTurn)
         EXPECT_TRUE(copies[2].turned()) << turn;
         expectMovedOnto(copies[2], placements, 3);
     }
+}
+
+// A rack set askew, by a turn that maps no axis onto an axis, is a copy all the same.
+TEST(ClusterCopies, AClusterTurnedByAnyAngleIsACopy)
+{
+    for (double turn : {0.5235987756, -1.0, 2.5}) {
+        std::vector<flt::PartPlacement> placements = row(0, 0);
+        for (const flt::PartPlacement& p : row(0, 0))
+            placements.push_back(turnedAbout(p, turn, 1, 3, 20));
+        const std::vector<ClusterCopy> copies = twoLeaves(placements, 3).copies;
+        EXPECT_EQ(copies[2].original, 1u) << turn;
+        EXPECT_TRUE(copies[2].turned()) << turn;
+        expectMovedOnto(copies[2], placements, 3);
+    }
+}
+
+// A rack seen in a mirror has the same parts, each placed alike but mirrored: its proxies
+// would be the original's turned inside out, so it is no copy.
+TEST(ClusterCopies, AMirroredClusterIsNoCopy)
+{
+    std::vector<flt::PartPlacement> placements = row(0, 0);
+    for (flt::PartPlacement p : row(0, 0)) {
+        for (int c = 0; c < 4; ++c)
+            p.matrix[0][c] = -p.matrix[0][c];  // x -> -x
+        p.matrix[0][3] += 20;
+        placements.push_back(p);
+    }
+    const std::vector<ClusterCopy> copies = twoLeaves(placements, 3).copies;
+    EXPECT_EQ(copies[2].original, 2u);
 }
 
 // The same parts in the same box, but the lone part in the middle: no turn or move makes

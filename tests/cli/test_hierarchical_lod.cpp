@@ -57,15 +57,16 @@ std::string writeGrid(const std::string& dir)
 }
 
 // A row of 8 knobs, their pins off centre, DEF'd once and USE'd 8 times 0.6 m apart (so
-// that each row is a cluster); every other row turned half round about its middle, as racks
-// facing across an aisle, the turn written with 8 decimals.
-std::string writeTurnedRows(const std::string& dir)
+// that each row is a cluster); every other row moved `shift` along x and turned about z by
+// `turn` (radians, as written), as racks facing across an aisle (a half turn) or set
+// askew.
+std::string writeTurnedRows(const std::string& dir, const std::string& shift, const std::string& turn)
 {
     std::ostringstream text;
     text << "#VRML V2.0 utf8\n";
     for (int y = 0; y < 8; ++y) {
-        text << "Transform { translation " << (y % 2 ? "0.56 " : "0 ") << 0.6 * y << " 0"
-             << (y % 2 ? " rotation 0 0 1 3.14159265" : "")
+        text << "Transform { translation " << (y % 2 ? shift : "0") << ' ' << 0.6 * y << " 0"
+             << (y % 2 ? " rotation 0 0 1 " + turn : "")
              << " children ";
         if (y > 0) {
             text << "USE ROW }\n";
@@ -432,19 +433,22 @@ TEST(CliHierarchicalLod, EveryProxyIsWithinItsErrorOfThePartsItReplaces)
     EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels);
 }
 
-// Rows turned half round are copies of the first row turned: their proxies are the first
-// row's, turned and moved. Measured where they stand against their own parts, whose pins
-// point the other way, they hold their error.
+// Rows turned half round, written with 8 decimals, or by 30 degrees, are copies of the
+// first row turned: their proxies are the first row's, turned and moved, drawn from its
+// centre moved. Measured where they stand against their own parts, whose pins point
+// another way, they hold their error.
 TEST(CliHierarchicalLod, ProxiesOfTurnedCopiesAreWithinTheirErrorWhereTheyStand)
 {
-    AssemblyConversion c = convertFile(writeTurnedRows(freshDirectory("hlod_turned")));
-    HierarchyOptions options;
-    options.tree.leafItems = 8;
-    const HierarchyStats stats = buildHierarchy(c, options, PartWelding{}, chainFrom);
-    ASSERT_GE(stats.proxyLevels, 2u);
-    EXPECT_GE(stats.turned, 3u);
-    EXPECT_GE(stats.copied, stats.turned + 3);
-    EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels);
+    for (const auto& [shift, turn] : {std::pair<std::string, std::string>{"0.56", "3.14159265"}, {"0", "0.52359878"}}) {
+        AssemblyConversion c = convertFile(writeTurnedRows(freshDirectory("hlod_turned"), shift, turn));
+        HierarchyOptions options;
+        options.tree.leafItems = 8;
+        const HierarchyStats stats = buildHierarchy(c, options, PartWelding{}, chainFrom);
+        ASSERT_GE(stats.proxyLevels, 2u) << turn;
+        EXPECT_GE(stats.turned, 3u) << turn;
+        EXPECT_GE(stats.copied, stats.turned + 3) << turn;
+        EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels) << turn;
+    }
 }
 
 // The fewest-calls mode's merged proxies hold each part at a level chosen for some distance:
