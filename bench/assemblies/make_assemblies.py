@@ -13,6 +13,7 @@ With no assembly given it writes the bench's set:
               in two rows across an aisle, the second row turned half round
   yard        the hall with its second row's racks set askew (turned 0.5 radian),
               the racks 50 inches apart so that each stands clear of the next
+  yard_close  the yard with the hall's 10-inch gaps: each turned rack's box overlaps the next
 Racks stand in ROWS rows; every other row is turned half round about the vertical, as
 racks that face each other across an aisle (the yard turns them by TURN, its racks GAP apart).
 Units are KiCad's (0.1 inch): convert with --unit 0.1in. Deterministic for a seed.
@@ -27,7 +28,8 @@ FAMILIES = ["Capacitor_SMD", "Resistor_SMD", "Package_SO", "Package_QFP", "Conne
             "Package_TO_SOT_SMD", "Crystal", "Inductor_SMD", "Button_Switch_SMD", "Diode_SMD", "LED_SMD",
             "Capacitor_THT", "Connector_USB", "Package_DIP", "Relay_THT"]
 DEFAULT_SET = [("cabinet", 3, 8, 80, 48, 1, 1), ("cabinet_q", 1, 4, 80, 48, 1, 1), ("plant", 10, 10, 100, 64, 2, 1),
-               ("hall", 8, 10, 100, 64, 3, 2), ("yard", 8, 10, 100, 64, 3, 2, "0.5", 500)]
+               ("hall", 8, 10, 100, 64, 3, 2), ("yard", 8, 10, 100, 64, 3, 2, "0.5", 500),
+               ("yard_close", 8, 10, 100, 64, 3, 2, "0.5", 100)]
 
 
 def library_parts(distinct, rng):

@@ -269,7 +269,7 @@ public:
         std::vector<Box3> boxes;
         for (const flt::PartPlacement& p : c_.model.placements)
             boxes.push_back(placedBox(c_.model.definitions[p.definition].levels.front(), p.matrix));
-        const std::vector<ClusterNode> tree = buildClusterTree(boxes, options_.tree);
+        const std::vector<ClusterNode> tree = buildClusterTree(boxes, options_.tree, assemblyPaths());
         const double diagonal = tree.empty() ? 0.0 : 2.0 * tree.front().box.halfDiagonal();
         SharedCopies shared = shareCopies(tree, c_.model.placements, boxes, partReaches(), kCopyTolerance * diagonal);
         nodes_ = std::move(shared.nodes);
@@ -324,6 +324,20 @@ private:
     double switchDistance(double error, double reach) const
     {
         return switchAtNearestPoint(projectedErrorDistance(error, options_.view), reach);
+    }
+
+    // The groups above each placement in the assembly, from its name ("Rack_2/Board_1/U1":
+    // Rack_2, then Board_1), each name a number.
+    AssemblyPaths assemblyPaths() const
+    {
+        std::map<std::string, std::size_t> numbers;
+        AssemblyPaths paths;
+        for (const flt::PartPlacement& p : c_.model.placements) {
+            std::vector<std::size_t>& path = paths.emplace_back();
+            for (std::size_t from = 0, slash; (slash = p.name.find('/', from)) != std::string::npos; from = slash + 1)
+                path.push_back(numbers.emplace(p.name.substr(from, slash - from), numbers.size()).first->second);
+        }
+        return paths;
     }
 
     // How far each part's vertices lie from its own origin, at any level.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 
 namespace cadlod {
@@ -112,6 +113,42 @@ std::vector<Group> split(Group g, const std::vector<Box3>& items, const ClusterT
     return groups;
 }
 
+// The pieces the assembly makes of `g` (box `all`), as kAssemblyPieceShare says; empty
+// when it makes none to take. An item whose path ends where the others go on is a piece
+// of its own.
+std::vector<Group> assemblyPieces(const Group& g, const Box3& all, const std::vector<Box3>& items,
+                                  const AssemblyPaths& paths, const ClusterTreeOptions& options)
+{
+    if (paths.empty())
+        return {};
+    const std::vector<std::size_t>& first = paths[g.front()];
+    std::size_t depth = 0;
+    while (depth < first.size() && std::all_of(g.begin(), g.end(), [&](std::size_t i) {
+               return depth < paths[i].size() && paths[i][depth] == first[depth];
+           }))
+        ++depth;
+    std::map<std::pair<std::size_t, std::size_t>, Group> pieces;  // (group, 0) or (item, 1)
+    for (std::size_t i : g) {
+        pieces[depth < paths[i].size() ? std::make_pair(paths[i][depth], std::size_t(0)) : std::make_pair(i, std::size_t(1))]
+            .push_back(i);
+        if (pieces.size() > options.fanout)
+            return {};
+    }
+    if (pieces.size() < 2)
+        return {};
+    std::vector<Group> out;
+    const double largest = kAssemblyPieceShare * all.halfDiagonal();
+    for (auto& [key, piece] : pieces) {
+        Box3 box;
+        for (std::size_t i : piece)
+            box.add(items[i]);
+        if (box.halfDiagonal() > largest)
+            return {};
+        out.push_back(std::move(piece));
+    }
+    return out;
+}
+
 // Takes out of `g` the items nearly as large as the whole group (box `all`), at most
 // `leafItems` of them: below, each would make the cluster holding it about as large as this
 // one, and keep its smaller neighbours from being drawn together until as far off.
@@ -134,7 +171,7 @@ Group takeLarge(Group& g, const Box3& all, const std::vector<Box3>& items, const
 }
 
 void buildNode(std::vector<ClusterNode>& nodes, std::size_t index, Group g, const std::vector<Box3>& items,
-               const ClusterTreeOptions& options)
+               const AssemblyPaths& paths, const ClusterTreeOptions& options)
 {
     for (std::size_t i : g)
         nodes[index].box.add(items[i]);
@@ -145,17 +182,21 @@ void buildNode(std::vector<ClusterNode>& nodes, std::size_t index, Group g, cons
         std::sort(nodes[index].items.begin(), nodes[index].items.end());
         return;
     }
-    for (Group& child : split(std::move(g), items, options)) {
+    std::vector<Group> children = assemblyPieces(g, nodes[index].box, items, paths, options);
+    if (children.empty())
+        children = split(std::move(g), items, options);
+    for (Group& child : children) {
         const std::size_t c = nodes.size();
         nodes[index].children.push_back(c);
         nodes.emplace_back();
-        buildNode(nodes, c, std::move(child), items, options);
+        buildNode(nodes, c, std::move(child), items, paths, options);
     }
 }
 
 }  // namespace
 
-std::vector<ClusterNode> buildClusterTree(const std::vector<Box3>& items, const ClusterTreeOptions& options)
+std::vector<ClusterNode> buildClusterTree(const std::vector<Box3>& items, const ClusterTreeOptions& options,
+                                          const AssemblyPaths& paths)
 {
     std::vector<ClusterNode> nodes;
     if (items.empty())
@@ -166,7 +207,7 @@ std::vector<ClusterNode> buildClusterTree(const std::vector<Box3>& items, const 
     Group all(items.size());
     std::iota(all.begin(), all.end(), std::size_t(0));
     nodes.emplace_back();
-    buildNode(nodes, 0, std::move(all), items, o);
+    buildNode(nodes, 0, std::move(all), items, paths.size() == items.size() ? paths : AssemblyPaths{}, o);
     return nodes;
 }
 

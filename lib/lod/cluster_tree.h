@@ -4,8 +4,10 @@
 // between its boxes in the middle half of them (the median where there is none), until a
 // node has `fanout` groups; a node of at most `leafItems` boxes is a leaf. Optionally
 // a box nearly as large as its whole group (a board under its parts) stays at the node above
-// the split, so that the clusters below are as small as their other boxes. Plain data: no
-// mesh type.
+// the split, so that the clusters below are as small as their other boxes. Where the
+// assembly groups a node's boxes into a few compact pieces (racks, boards: the paths of the
+// placements' names), those pieces are its children, however close they stand. Plain data:
+// no mesh type.
 #pragma once
 
 #include <array>
@@ -43,7 +45,18 @@ struct ClusterTreeOptions {
     double largeShare = 0;
 };
 
+// Where each item sits in the assembly: the names of the groups above it, outermost first,
+// each as a number (equal numbers at one depth: the same group). Empty: boxes only.
+using AssemblyPaths = std::vector<std::vector<std::size_t>>;
+
+// A node's children are the pieces its boxes form in the assembly (the first depth at which
+// their paths differ) when there are 2 to `fanout` of them and each piece's half-diagonal is
+// at most this share of the node's: a piece nearly as large as the node (a loose
+// subassembly, boards stacked in a rack) is cut better by its boxes.
+inline constexpr double kAssemblyPieceShare = 0.75;
+
 // nodes[0] is the root; every item is held by exactly one node. Empty for no items.
-std::vector<ClusterNode> buildClusterTree(const std::vector<Box3>& items, const ClusterTreeOptions& options = {});
+std::vector<ClusterNode> buildClusterTree(const std::vector<Box3>& items, const ClusterTreeOptions& options = {},
+                                          const AssemblyPaths& paths = {});
 
 }  // namespace cadlod

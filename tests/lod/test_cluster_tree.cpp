@@ -128,6 +128,50 @@ TEST(ClusterTree, RacksThatStandApartAreClustersOfTheirOwn)
     }
 }
 
+// Four racks of 16 parts set askew, each rack's box overlapping its neighbours': no gap
+// parts them, and boxes alone cut across racks. The assembly's paths make each rack a
+// cluster of its own; with one path for all, the boxes decide again.
+TEST(ClusterTree, RacksTheAssemblyNamesAreClustersThoughTheirBoxesOverlap)
+{
+    std::vector<Box3> boxes;
+    AssemblyPaths racks, oneGroup;
+    for (std::size_t rack = 0; rack < 4; ++rack)
+        for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 4; ++i) {
+                boxes.push_back(cube(4.0 * double(rack) + i + j, j - i, 0, 0.2));  // 45 degrees
+                racks.push_back({7, rack});
+                oneGroup.push_back({7});
+            }
+    auto racksKeptWhole = [&](const std::vector<ClusterNode>& nodes) {
+        for (std::size_t child : nodes.front().children)
+            for (std::size_t i : nodes[child].items)
+                if (i / 16 != nodes[child].items.front() / 16)
+                    return false;
+        return nodes.front().children.size() == 4;
+    };
+    EXPECT_TRUE(racksKeptWhole(buildClusterTree(boxes, {16, 8}, racks)));
+    EXPECT_FALSE(racksKeptWhole(buildClusterTree(boxes, {16, 8}, oneGroup)));
+    EXPECT_FALSE(racksKeptWhole(buildClusterTree(boxes, {16, 8})));
+    // More racks than a node may have children: boxes again.
+    EXPECT_FALSE(racksKeptWhole(buildClusterTree(boxes, {16, 3}, racks)));
+}
+
+// Two pieces each nearly as large as the whole (two interleaved combs): the assembly's
+// pieces would make clusters no smaller than their parent, and the boxes cut instead.
+TEST(ClusterTree, PiecesNearlyAsLargeAsTheirNodeAreCutByTheirBoxes)
+{
+    std::vector<Box3> boxes;
+    AssemblyPaths paths;
+    for (int i = 0; i < 40; ++i) {
+        boxes.push_back(cube(i, 0, 0, 0.2));
+        paths.push_back({std::size_t(i % 2)});
+    }
+    const std::vector<ClusterNode> nodes = buildClusterTree(boxes, {8, 2}, paths);
+    ASSERT_EQ(nodes.front().children.size(), 2u);
+    for (std::size_t child : nodes.front().children)
+        EXPECT_LT(nodes[child].box.hi[0] - nodes[child].box.lo[0], 30.0);
+}
+
 TEST(ClusterTree, NoItemsNoNodes)
 {
     EXPECT_TRUE(buildClusterTree({}).empty());
