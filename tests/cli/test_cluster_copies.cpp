@@ -127,33 +127,32 @@ TEST(ClusterCopies, AMovedClusterIsACopyOfTheFirst)
     expectMovedOnto(copies[2], placements, 3);
 }
 
+// A row and a copy of it turned by `turn` about z through (cx, cy) and moved 20 along y:
+// the copy is found, turned.
+static void expectTurnedCopyFound(double turn, double cx, double cy)
+{
+    std::vector<flt::PartPlacement> placements = row(0, 0);
+    for (const flt::PartPlacement& p : row(0, 0))
+        placements.push_back(turnedAbout(p, turn, cx, cy, 20));
+    const std::vector<ClusterCopy> copies = twoLeaves(placements, 3).copies;
+    EXPECT_EQ(copies[2].original, 1u) << turn;
+    EXPECT_TRUE(copies[2].turned()) << turn;
+    expectMovedOnto(copies[2], placements, 3);
+}
+
 // A rack turned half round to face the first across an aisle, its turn written "3.14159":
 // its parts miss an exact half turn by less than the tolerance. A quarter turn too.
 TEST(ClusterCopies, AClusterTurnedAndMovedIsACopyWithItsTurn)
 {
-    for (double turn : {3.14159265358979, 3.14159, 1.5707963}) {
-        std::vector<flt::PartPlacement> placements = row(0, 0);
-        for (const flt::PartPlacement& p : row(0, 0))
-            placements.push_back(turnedAbout(p, turn, 2, 0.5, 20));
-        const std::vector<ClusterCopy> copies = twoLeaves(placements, 3).copies;
-        EXPECT_EQ(copies[2].original, 1u) << turn;
-        EXPECT_TRUE(copies[2].turned()) << turn;
-        expectMovedOnto(copies[2], placements, 3);
-    }
+    for (double turn : {3.14159265358979, 3.14159, 1.5707963})
+        expectTurnedCopyFound(turn, 2, 0.5);
 }
 
 // A rack set askew, by a turn that maps no axis onto an axis, is a copy all the same.
 TEST(ClusterCopies, AClusterTurnedByAnyAngleIsACopy)
 {
-    for (double turn : {0.5235987756, -1.0, 2.5}) {
-        std::vector<flt::PartPlacement> placements = row(0, 0);
-        for (const flt::PartPlacement& p : row(0, 0))
-            placements.push_back(turnedAbout(p, turn, 1, 3, 20));
-        const std::vector<ClusterCopy> copies = twoLeaves(placements, 3).copies;
-        EXPECT_EQ(copies[2].original, 1u) << turn;
-        EXPECT_TRUE(copies[2].turned()) << turn;
-        expectMovedOnto(copies[2], placements, 3);
-    }
+    for (double turn : {0.5235987756, -1.0, 2.5})
+        expectTurnedCopyFound(turn, 1, 3);
 }
 
 // A rack seen in a mirror has the same parts, each placed alike but mirrored: its proxies
