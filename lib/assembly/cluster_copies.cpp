@@ -10,29 +10,6 @@ namespace {
 
 using flt::Mat4d;
 
-double determinant3(const Mat4d& m)
-{
-    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
-
-// The placement undone: m's 3x3 part inverted (its cofactors over its determinant, which
-// is not zero for a placement), its shift turned back.
-Mat4d inverse(const Mat4d& m)
-{
-    const double det = determinant3(m);
-    Mat4d out{};
-    out[3][3] = 1;
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) {
-            const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
-            out[r][c] = (m[r1][c1] * m[r2][c2] - m[r1][c2] * m[r2][c1]) / det;
-        }
-    for (int r = 0; r < 3; ++r)
-        out[r][3] = -(out[r][0] * m[0][3] + out[r][1] * m[1][3] + out[r][2] * m[2][3]);
-    return out;
-}
-
 // A turn part this near to mapping axes onto axes is taken as doing so exactly (a half turn
 // written "3.14159"); placedAlike then says whether the parts still land.
 constexpr double kAxisSlack = 1e-5;
@@ -56,15 +33,6 @@ Mat4d snappedToAxes(Mat4d move, const Box3& from, const Box3& to)
         }
     }
     return move;
-}
-
-bool isPlainMove(const Mat4d& m)
-{
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-            if (m[r][c] != (r == c ? 1.0 : 0.0))
-                return false;
-    return true;
 }
 
 // How far apart two placements of one part put its vertices, at most (`reach`: how far
@@ -198,17 +166,17 @@ private:
         const std::size_t part = rarestPart(theirs);
         const std::size_t anchor = *std::find_if(theirs.begin(), theirs.end(),
                                                  [&](std::size_t p) { return placements_[p].definition == part; });
-        const Mat4d undo = inverse(placements_[anchor].matrix);
+        const Mat4d undo = flt::inverse(placements_[anchor].matrix);
         std::vector<Mat4d> moves;
         for (std::size_t q : mine) {
             if (placements_[q].definition != part)
                 continue;
             const Mat4d move =
                 snappedToAxes(flt::multiply(placements_[q].matrix, undo), out_.nodes[o].box, tree_[n].box);
-            if (determinant3(move) > 0 && std::find(moves.begin(), moves.end(), move) == moves.end())
+            if (flt::determinant3(move) > 0 && std::find(moves.begin(), moves.end(), move) == moves.end())
                 moves.push_back(move);
         }
-        std::stable_partition(moves.begin(), moves.end(), isPlainMove);
+        std::stable_partition(moves.begin(), moves.end(), [](const Mat4d& m) { return !flt::turns(m); });
         return moves;
     }
 
@@ -271,14 +239,7 @@ private:
 
 }  // namespace
 
-bool ClusterCopy::turned() const
-{
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-            if (move[r][c] != (r == c ? 1.0 : 0.0))
-                return true;
-    return false;
-}
+bool ClusterCopy::turned() const { return flt::turns(move); }
 
 SharedCopies shareCopies(const std::vector<ClusterNode>& tree, const std::vector<flt::PartPlacement>& placements,
                          const std::vector<Box3>& placedBoxes, const std::vector<double>& partReach, double tolerance)

@@ -207,7 +207,8 @@ std::vector<ClusterNode> buildClusterTree(const std::vector<Box3>& items, const 
     Group all(items.size());
     std::iota(all.begin(), all.end(), std::size_t(0));
     nodes.emplace_back();
-    buildNode(nodes, 0, std::move(all), items, paths.size() == items.size() ? paths : AssemblyPaths{}, o);
+    static const AssemblyPaths kNone;
+    buildNode(nodes, 0, std::move(all), items, paths.size() == items.size() ? paths : kNone, o);
     return nodes;
 }
 

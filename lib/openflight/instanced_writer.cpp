@@ -9,12 +9,6 @@
 namespace cadlod::flt {
 namespace {
 
-double determinant3(const Mat4d& m)
-{
-    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
-
 std::size_t finestTriangles(const PartDefinition& d)
 {
     return d.levels.empty() ? 0 : d.levels.front().triangleCount();
@@ -145,15 +139,6 @@ private:
     }
 
     int nextNumber() const { return int(numbers_.size() + shapeNumbers_.size()) + 1; }
-
-    static bool isIdentity(const Mat4d& m)
-    {
-        for (int r = 0; r < 4; ++r)
-            for (int c = 0; c < 4; ++c)
-                if (m[r][c] != (r == c ? 1.0 : 0.0))
-                    return false;
-        return true;
-    }
 
     bool writePlacement(const PartPlacement& p, std::string& error)
     {

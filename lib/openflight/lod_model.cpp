@@ -15,6 +15,42 @@ Mat4d multiply(const Mat4d& a, const Mat4d& b)
     return out;
 }
 
+double determinant3(const Mat4d& m)
+{
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+// The 3x3 part inverted (its cofactors over its determinant), the shift turned back.
+Mat4d inverse(const Mat4d& m)
+{
+    const double det = determinant3(m);
+    Mat4d out{};
+    out[3][3] = 1;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+            const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+            out[r][c] = (m[r1][c1] * m[r2][c2] - m[r1][c2] * m[r2][c1]) / det;
+        }
+    for (int r = 0; r < 3; ++r)
+        out[r][3] = -(out[r][0] * m[0][3] + out[r][1] * m[1][3] + out[r][2] * m[2][3]);
+    return out;
+}
+
+bool turns(const Mat4d& m)
+{
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            if (m[r][c] != (r == c ? 1.0 : 0.0))
+                return true;
+    return false;
+}
+
+bool isIdentity(const Mat4d& m)
+{
+    return !turns(m) && m[0][3] == 0 && m[1][3] == 0 && m[2][3] == 0;
+}
+
 std::size_t Level::triangleCount() const
 {
     std::size_t n = 0;
