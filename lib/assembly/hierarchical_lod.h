@@ -47,8 +47,8 @@ struct HierarchyOptions {
     // its parts merged unchanged, each at the level it shows from its nearest possible
     // distance (so that every part keeps its own error), in one draw call; only clusters of
     // kSimplifiedClusterPlacements or more, at every kSimplifiedEveryDepths, also get
-    // simplified proxies. Merging gives up
-    // instancing: the file holds about the expanded model's geometry again.
+    // simplified proxies. Merging gives up instancing: the file holds about the expanded
+    // model's geometry again.
     bool fewestCalls = false;
 };
 
