@@ -326,16 +326,19 @@ private:
         return switchAtNearestPoint(projectedErrorDistance(error, options_.view), reach);
     }
 
-    // The groups above each placement in the assembly, from its name ("Rack_2/Board_1/U1":
-    // Rack_2, then Board_1), each name a number.
+    // Where each placement is in the assembly, from its name ("Rack_2/Board_1/U1": Rack_2,
+    // Board_1, then U1), each name a number. A placement's own name is in its path: a board
+    // placed as "Rack_2/Board_1" belongs with the parts placed under it.
     AssemblyPaths assemblyPaths() const
     {
         std::map<std::string, std::size_t> numbers;
         AssemblyPaths paths;
         for (const flt::PartPlacement& p : c_.model.placements) {
             std::vector<std::size_t>& path = paths.emplace_back();
-            for (std::size_t from = 0, slash; (slash = p.name.find('/', from)) != std::string::npos; from = slash + 1)
+            for (std::size_t from = 0, slash = 0; slash != std::string::npos; from = slash + 1) {
+                slash = p.name.find('/', from);
                 path.push_back(numbers.emplace(p.name.substr(from, slash - from), numbers.size()).first->second);
+            }
         }
         return paths;
     }

@@ -45,31 +45,47 @@ using Group = std::vector<std::size_t>;
 // rack stand the same gap apart, to the rounding of single-precision vertices.
 constexpr double kGapsAlike = 1e-4;
 
-Box3 centresOf(const Group& g, const std::vector<Box3>& items)
+// What a split cuts: boxes, each standing for a number of items (one where no weights).
+struct Atoms {
+    const std::vector<Box3>& boxes;
+    const std::vector<std::size_t>& weights;
+};
+
+Box3 centresOf(const Group& g, const std::vector<Box3>& boxes)
 {
     Box3 b;
     for (std::size_t i : g)
-        b.add(items[i].center());
+        b.add(boxes[i].center());
     return b;
+}
+
+std::size_t weightOf(const Group& g, const Atoms& atoms)
+{
+    if (atoms.weights.empty())
+        return g.size();
+    std::size_t w = 0;
+    for (std::size_t i : g)
+        w += atoms.weights[i];
+    return w;
 }
 
 // Where to cut `sorted` (by centre along `axis`): at the widest gap between the boxes on
 // either side within its middle half, the one nearest the median of gaps alike, so that
 // the pieces of an assembly that stand apart (racks, bays) become clusters of their own,
 // and copies of one piece get clusters alike; at the median where no gap is.
-std::size_t cutIndex(const Group& sorted, const std::vector<Box3>& items, int axis, double extent)
+std::size_t cutIndex(const Group& sorted, const std::vector<Box3>& boxes, int axis, double extent)
 {
     const std::size_t n = sorted.size();
     std::vector<double> lowestRight(n + 1, std::numeric_limits<double>::max());
     for (std::size_t k = n; k-- > 0;)
-        lowestRight[k] = std::min(lowestRight[k + 1], items[sorted[k]].lo[axis]);
+        lowestRight[k] = std::min(lowestRight[k + 1], boxes[sorted[k]].lo[axis]);
     const double alike = kGapsAlike * extent;
     auto offMedian = [n](std::size_t k) { return k > n / 2 ? k - n / 2 : n / 2 - k; };
     std::size_t cut = n / 2;
     double widest = alike;
     double highestLeft = -std::numeric_limits<double>::max();
     for (std::size_t k = 1; k < n; ++k) {
-        highestLeft = std::max(highestLeft, items[sorted[k - 1]].hi[axis]);
+        highestLeft = std::max(highestLeft, boxes[sorted[k - 1]].hi[axis]);
         if (4 * k < n || 4 * k > 3 * n)
             continue;
         const double gap = lowestRight[k] - highestLeft;
@@ -82,45 +98,44 @@ std::size_t cutIndex(const Group& sorted, const std::vector<Box3>& items, int ax
 }
 
 // Cuts `g` in two along the widest axis of its centres (cutIndex).
-std::pair<Group, Group> bisect(Group g, const std::vector<Box3>& items)
+std::pair<Group, Group> bisect(Group g, const std::vector<Box3>& boxes)
 {
-    const Box3 c = centresOf(g, items);
+    const Box3 c = centresOf(g, boxes);
     int axis = 0;
     for (int a = 1; a < 3; ++a)
         if (c.hi[a] - c.lo[a] > c.hi[axis] - c.lo[axis])
             axis = a;
     std::sort(g.begin(), g.end(), [&](std::size_t a, std::size_t b) {
-        const double ca = items[a].center()[axis], cb = items[b].center()[axis];
+        const double ca = boxes[a].center()[axis], cb = boxes[b].center()[axis];
         return ca != cb ? ca < cb : a < b;
     });
-    const auto middle = g.begin() + std::ptrdiff_t(cutIndex(g, items, axis, c.hi[axis] - c.lo[axis]));
+    const auto middle = g.begin() + std::ptrdiff_t(cutIndex(g, boxes, axis, c.hi[axis] - c.lo[axis]));
     return {Group(g.begin(), middle), Group(middle, g.end())};
 }
 
-// Splits `g` into at most `fanout` groups, the largest cut first.
-std::vector<Group> split(Group g, const std::vector<Box3>& items, const ClusterTreeOptions& options)
+// Splits `g` (atoms by index) into at most `fanout` groups, the one standing for most items
+// cut first, until every group of two atoms or more stands for at most `leafItems`.
+std::vector<Group> split(Group g, const Atoms& atoms, const ClusterTreeOptions& options)
 {
     std::vector<Group> groups{std::move(g)};
     while (groups.size() < options.fanout) {
-        auto largest = std::max_element(groups.begin(), groups.end(),
-                                         [](const Group& a, const Group& b) { return a.size() < b.size(); });
-        if (largest->size() <= options.leafItems)
+        auto largest = groups.end();
+        for (auto it = groups.begin(); it != groups.end(); ++it)
+            if (it->size() > 1 && (largest == groups.end() || weightOf(*it, atoms) > weightOf(*largest, atoms)))
+                largest = it;
+        if (largest == groups.end() || weightOf(*largest, atoms) <= options.leafItems)
             break;
-        auto halves = bisect(std::move(*largest), items);
+        auto halves = bisect(std::move(*largest), atoms.boxes);
         *largest = std::move(halves.first);
         groups.push_back(std::move(halves.second));
     }
     return groups;
 }
 
-// The pieces the assembly makes of `g` (box `all`), as kAssemblyPieceShare says; empty
-// when it makes none to take. An item whose path ends where the others go on is a piece
-// of its own.
-std::vector<Group> assemblyPieces(const Group& g, const Box3& all, const std::vector<Box3>& items,
-                                  const AssemblyPaths& paths, const ClusterTreeOptions& options)
+// The pieces of `g` at the first depth at which their paths differ; an item whose path
+// ends there is a piece of its own.
+std::vector<Group> piecesOf(const Group& g, const AssemblyPaths& paths)
 {
-    if (paths.empty())
-        return {};
     const std::vector<std::size_t>& first = paths[g.front()];
     std::size_t depth = 0;
     while (depth < first.size() && std::all_of(g.begin(), g.end(), [&](std::size_t i) {
@@ -128,25 +143,64 @@ std::vector<Group> assemblyPieces(const Group& g, const Box3& all, const std::ve
            }))
         ++depth;
     std::map<std::pair<std::size_t, std::size_t>, Group> pieces;  // (group, 0) or (item, 1)
-    for (std::size_t i : g) {
+    for (std::size_t i : g)
         pieces[depth < paths[i].size() ? std::make_pair(paths[i][depth], std::size_t(0)) : std::make_pair(i, std::size_t(1))]
             .push_back(i);
-        if (pieces.size() > options.fanout)
-            return {};
-    }
-    if (pieces.size() < 2)
-        return {};
     std::vector<Group> out;
-    const double largest = kAssemblyPieceShare * all.halfDiagonal();
-    for (auto& [key, piece] : pieces) {
-        Box3 box;
-        for (std::size_t i : piece)
-            box.add(items[i]);
-        if (box.halfDiagonal() > largest)
-            return {};
+    for (auto& [key, piece] : pieces)
         out.push_back(std::move(piece));
-    }
     return out;
+}
+
+Box3 boxOf(const Group& g, const std::vector<Box3>& items)
+{
+    Box3 box;
+    for (std::size_t i : g)
+        box.add(items[i]);
+    return box;
+}
+
+// Whether the assembly's pieces of a node (box `all`) are to be kept whole: some hold more
+// than one item, and none of those is larger than kAssemblyPieceShare of the node.
+bool keepWhole(const std::vector<Group>& pieces, const std::vector<Box3>& boxes, const Box3& all)
+{
+    bool grouped = false;
+    for (std::size_t p = 0; p < pieces.size(); ++p)
+        if (pieces[p].size() > 1) {
+            if (boxes[p].halfDiagonal() > kAssemblyPieceShare * all.halfDiagonal())
+                return false;
+            grouped = true;
+        }
+    return grouped;
+}
+
+// The children of a node holding `g` (box `all`): the pieces the assembly makes of it, when
+// they are to be kept whole (keepWhole), grouped by their boxes where there are more than
+// `fanout`; otherwise the items grouped by their boxes.
+std::vector<Group> childrenOf(Group g, const Box3& all, const std::vector<Box3>& items, const AssemblyPaths& paths,
+                              const ClusterTreeOptions& options)
+{
+    static const std::vector<std::size_t> kOneEach;
+    const std::vector<Group> pieces = paths.empty() ? std::vector<Group>{} : piecesOf(g, paths);
+    std::vector<Box3> boxes;
+    std::vector<std::size_t> weights;
+    for (const Group& piece : pieces) {
+        boxes.push_back(boxOf(piece, items));
+        weights.push_back(piece.size());
+    }
+    if (!keepWhole(pieces, boxes, all))
+        return split(std::move(g), Atoms{items, kOneEach}, options);
+    if (pieces.size() <= options.fanout)
+        return pieces;
+    Group every(pieces.size());
+    std::iota(every.begin(), every.end(), std::size_t(0));
+    std::vector<Group> children;
+    for (const Group& group : split(std::move(every), Atoms{boxes, weights}, options)) {
+        Group& child = children.emplace_back();
+        for (std::size_t a : group)
+            child.insert(child.end(), pieces[a].begin(), pieces[a].end());
+    }
+    return children;
 }
 
 // Takes out of `g` the items nearly as large as the whole group (box `all`), at most
@@ -182,9 +236,7 @@ void buildNode(std::vector<ClusterNode>& nodes, std::size_t index, Group g, cons
         std::sort(nodes[index].items.begin(), nodes[index].items.end());
         return;
     }
-    std::vector<Group> children = assemblyPieces(g, nodes[index].box, items, paths, options);
-    if (children.empty())
-        children = split(std::move(g), items, options);
+    std::vector<Group> children = childrenOf(std::move(g), nodes[index].box, items, paths, options);
     for (Group& child : children) {
         const std::size_t c = nodes.size();
         nodes[index].children.push_back(c);

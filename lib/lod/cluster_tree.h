@@ -5,8 +5,9 @@
 // node has `fanout` groups; a node of at most `leafItems` boxes is a leaf. Optionally
 // a box nearly as large as its whole group (a board under its parts) stays at the node above
 // the split, so that the clusters below are as small as their other boxes. Where the
-// assembly groups a node's boxes into a few compact pieces (racks, boards: the paths of the
-// placements' names), those pieces are its children, however close they stand. Plain data:
+// assembly groups a node's boxes into compact pieces (racks, boards, stations: the paths of
+// the placements' names), no piece is cut: a few are its children, however close they
+// stand, and more than `fanout` are grouped by their boxes. Plain data:
 // no mesh type.
 #pragma once
 
@@ -46,13 +47,15 @@ struct ClusterTreeOptions {
 };
 
 // Where each item sits in the assembly: the names of the groups above it, outermost first,
-// each as a number (equal numbers at one depth: the same group). Empty: boxes only.
+// then its own, each as a number (equal numbers at one depth: the same group). Empty: boxes
+// only.
 using AssemblyPaths = std::vector<std::vector<std::size_t>>;
 
-// A node's children are the pieces its boxes form in the assembly (the first depth at which
-// their paths differ) when there are 2 to `fanout` of them and each piece's half-diagonal is
-// at most this share of the node's: a piece nearly as large as the node (a loose
-// subassembly, boards stacked in a rack) is cut better by its boxes.
+// A node's pieces in the assembly are the groups its items form at the first depth at which
+// their paths differ. They are kept whole when each piece of two items or more has a
+// half-diagonal of at most this share of the node's: a piece nearly as large as the node (a
+// loose subassembly) is cut better by its boxes. Kept whole, 2 to `fanout` pieces are the
+// node's children; more are grouped into `fanout` children by their boxes.
 inline constexpr double kAssemblyPieceShare = 0.75;
 
 // nodes[0] is the root; every item is held by exactly one node. Empty for no items.

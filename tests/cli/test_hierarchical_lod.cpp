@@ -24,6 +24,8 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -84,6 +86,36 @@ std::string writeTurnedRows(const std::string& dir, const std::string& shift, co
         text << "] } }\n";
     }
     const std::string path = dir + "/turned_rows.wrl";
+    std::ofstream(path) << text.str();
+    return path;
+}
+
+// Twelve stations along a beam, each a plate and six knobs DEF'd once and USE'd: placed in
+// a zigzag 0.3 m apart, each station's box overlaps its neighbours' along the line, so no
+// gap parts them; the plate is placed as the station itself, the knobs under it.
+std::string writeStations(const std::string& dir)
+{
+    std::ostringstream text;
+    text << "#VRML V2.0 utf8\n"
+            "DEF Beam Shape { geometry Box { size 4 0.02 0.02 } }\n";
+    for (int k = 0; k < 12; ++k) {
+        text << "DEF Station_" << k << " Transform { translation " << 0.3 * k - 1.65 << ' ' << 0.15 * (k % 2)
+             << " 0.03 children ";
+        if (k > 0) {
+            text << "USE STATION }\n";
+            continue;
+        }
+        text << "DEF STATION Group { children [ Shape { geometry Box { size 0.4 0.1 0.01 } }\n";
+        for (int i = 0; i < 6; ++i)
+            text << " DEF K" << i << " Transform { translation " << 0.07 * i - 0.175 << " 0 0.012 children "
+                 << (i == 0 ? "DEF KNOB Group { children [ Shape { geometry Sphere { radius 0.012 } }\n"
+                              "  Transform { translation 0.004 0 0.015 children Shape { geometry Cylinder { "
+                              "radius 0.003 height 0.03 } } } ] }"
+                            : "USE KNOB")
+                 << " }\n";
+        text << "] } }\n";
+    }
+    const std::string path = dir + "/stations.wrl";
     std::ofstream(path) << text.str();
     return path;
 }
@@ -430,6 +462,28 @@ TEST(CliHierarchicalLod, EveryProxyIsWithinItsErrorOfThePartsItReplaces)
     // The grid's clusters repeat each other: most get their proxies moved from a copy's, and
     // are measured where they stand, against their own parts.
     EXPECT_GE(stats.copied, 4u);
+    EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels);
+}
+
+// More stations than a node has children, their boxes overlapping: the tree groups whole
+// stations, each plate with its knobs, so every station is a cluster and all but the first
+// are its copies.
+TEST(CliHierarchicalLod, StationsAlongABeamAreClustersOfTheirOwnAndCopies)
+{
+    AssemblyConversion c = convertFile(writeStations(freshDirectory("hlod_stations")));
+    HierarchyOptions options;
+    options.tree.leafItems = 8;
+    const HierarchyStats stats = buildHierarchy(c, options, PartWelding{}, chainFrom);
+    std::map<std::string, std::set<std::size_t>> leavesOfStation;
+    for (std::size_t k = 0; k < c.model.clusters.size(); ++k)
+        if (c.model.clusters[k].clusters.empty())
+            for (std::size_t p : c.model.clusters[k].placements) {
+                const std::string& name = c.model.placements[p].name;
+                leavesOfStation[name.substr(0, name.find('/'))].insert(k);
+            }
+    for (int k = 0; k < 12; ++k)
+        EXPECT_EQ(leavesOfStation["Station_" + std::to_string(k)].size(), 1u) << "station " << k << " is cut";
+    EXPECT_GE(stats.copied, 11u);
     EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels);
 }
 

@@ -152,8 +152,76 @@ TEST(ClusterTree, RacksTheAssemblyNamesAreClustersThoughTheirBoxesOverlap)
     EXPECT_TRUE(racksKeptWhole(buildClusterTree(boxes, {16, 8}, racks)));
     EXPECT_FALSE(racksKeptWhole(buildClusterTree(boxes, {16, 8}, oneGroup)));
     EXPECT_FALSE(racksKeptWhole(buildClusterTree(boxes, {16, 8})));
-    // More racks than a node may have children: boxes again.
-    EXPECT_FALSE(racksKeptWhole(buildClusterTree(boxes, {16, 3}, racks)));
+}
+
+// Whether every leaf holds items of one piece only (items of a piece numbered together,
+// `perPiece` each) and holds all of them.
+bool piecesKeptWhole(const std::vector<ClusterNode>& nodes, std::size_t perPiece)
+{
+    for (const ClusterNode& node : nodes)
+        if (node.leaf()) {
+            if (node.items.size() != perPiece)
+                return false;
+            for (std::size_t i : node.items)
+                if (i / perPiece != node.items.front() / perPiece)
+                    return false;
+        }
+    return true;
+}
+
+// Six askew racks under a node of at most three children: the racks are grouped by their
+// boxes, none is cut.
+TEST(ClusterTree, MoreRacksThanANodeHasChildrenAreGroupedNotCut)
+{
+    std::vector<Box3> boxes;
+    AssemblyPaths racks;
+    for (std::size_t rack = 0; rack < 6; ++rack)
+        for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 4; ++i) {
+                boxes.push_back(cube(4.0 * double(rack) + i + j, j - i, 0, 0.2));
+                racks.push_back({7, rack});
+            }
+    EXPECT_TRUE(piecesKeptWhole(buildClusterTree(boxes, {16, 3}, racks), 16));
+    EXPECT_FALSE(piecesKeptWhole(buildClusterTree(boxes, {16, 3}), 16));
+}
+
+// Ten stations of 12 parts along a line, each its own group, and one beam under them all:
+// the stations stay whole, more of them than a node has children.
+TEST(ClusterTree, StationsAlongABeamStayWhole)
+{
+    std::vector<Box3> boxes;
+    AssemblyPaths paths;
+    for (std::size_t station = 0; station < 10; ++station)
+        for (int i = 0; i < 12; ++i) {
+            boxes.push_back(cube(10.0 * double(station) + i % 4 + 0.35 * (i / 4), i / 4, 1, 0.3));
+            paths.push_back({0, 1 + station});
+        }
+    const std::size_t beamItem = boxes.size();
+    Box3 beam;
+    beam.add(std::array<double, 3>{-1, 0, -0.5});
+    beam.add(std::array<double, 3>{100, 2, 0});
+    boxes.push_back(beam);
+    paths.push_back({0});
+    const std::vector<ClusterNode> nodes = buildClusterTree(boxes, {16, 4}, paths);
+    for (const ClusterNode& node : nodes) {
+        if (!node.leaf())
+            continue;
+        std::size_t station = beamItem;
+        for (std::size_t i : node.items)
+            if (i < beamItem) {
+                EXPECT_TRUE(station == beamItem || station == i / 12) << "a leaf holds parts of two stations";
+                station = i / 12;
+            }
+    }
+    for (std::size_t s = 0; s < 10; ++s) {
+        std::size_t holder = nodes.size();
+        for (std::size_t n = 0; n < nodes.size(); ++n)
+            for (std::size_t i : nodes[n].items)
+                if (i / 12 == s && i < beamItem) {
+                    EXPECT_TRUE(holder == nodes.size() || holder == n) << "station " << s << " is cut";
+                    holder = n;
+                }
+    }
 }
 
 // Two pieces each nearly as large as the whole (two interleaved combs): the assembly's
