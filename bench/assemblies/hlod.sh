@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Hierarchical LOD side by side (docs/benchmarks.md, "Hierarchical LOD"):
-#   bench/assemblies/hlod.sh BUILD_DIR WORK_DIR [ASSEMBLY...]   (default: demo cabinet_q cabinet plant hall yard yard_close)
+#   bench/assemblies/hlod.sh BUILD_DIR WORK_DIR [ASSEMBLY...]   (default: demo cabinet_q cabinet plant hall yard yard_close line)
 # For each assembly (the bundled demo, or one made by make_assemblies.py into WORK_DIR), in one
 # run: --hlod auto (the default), --hlod off (a node per placement), --hlod calls (the fewest
 # draw calls; not on the plant, the hall or the yards, whose merged files would be several GB) and, for the demo and
@@ -11,7 +11,7 @@
 set -euo pipefail
 BUILD="$(cd "$1" && pwd)"; WORK="$2"; shift 2
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-ASSEMBLIES=("$@"); [ $# -gt 0 ] || ASSEMBLIES=(demo cabinet_q cabinet plant hall yard yard_close)
+ASSEMBLIES=("$@"); [ $# -gt 0 ] || ASSEMBLIES=(demo cabinet_q cabinet plant hall yard yard_close line)
 CADLOD="$BUILD/cli/cadlod"; VIEW="$BUILD/bench/view_error/view_error"
 mkdir -p "$WORK/hlod"; WORK="$(cd "$WORK" && pwd)"
 [ -f "$WORK/yard_close/yard_close.wrl" ] || python3 "$HERE/make_assemblies.py" "$WORK" >/dev/null
