@@ -34,6 +34,16 @@ namespace {
 
 constexpr int kColumns = 8, kRows = 8, kLayers = 2;
 
+// A knob: a sphere and a red pin `pinX` off its centre, DEF'd as KNOB.
+std::string knobDefinition(const char* pinX)
+{
+    return std::string("DEF KNOB Group { children [ Shape { geometry Sphere { radius 0.012 } }\n"
+                       "  Transform { translation ") +
+           pinX +
+           " 0 0.015 children Shape { appearance Appearance { material Material { diffuseColor 1 0 0 } } "
+           "geometry Cylinder { radius 0.003 height 0.03 } } } ] }";
+}
+
 // A knob (a sphere and a red pin) DEF'd once and USE'd on an 8 x 8 x 2 grid, 0.6 m wide.
 std::string writeGrid(const std::string& dir)
 {
@@ -45,12 +55,7 @@ std::string writeGrid(const std::string& dir)
             for (int x = 0; x < kColumns; ++x, ++n) {
                 text << "DEF P" << n << " Transform { translation " << 0.08 * x << ' ' << 0.08 * y << ' ' << 0.1 * z
                      << " children ";
-                if (n == 0)
-                    text << "DEF KNOB Group { children [ Shape { geometry Sphere { radius 0.012 } }\n"
-                            "  Transform { translation 0 0 0.015 children Shape { appearance Appearance { material "
-                            "Material { diffuseColor 1 0 0 } } geometry Cylinder { radius 0.003 height 0.03 } } } ] }";
-                else
-                    text << "USE KNOB";
+                text << (n == 0 ? knobDefinition("0") : "USE KNOB");
                 text << " }\n";
             }
     const std::string path = dir + "/grid.wrl";
@@ -77,11 +82,7 @@ std::string writeTurnedRows(const std::string& dir, const std::string& shift, co
         text << "DEF ROW Group { children [\n";
         for (int x = 0; x < 8; ++x)
             text << " Transform { translation " << 0.08 * x << " 0 0 children "
-                 << (x == 0 ? "DEF KNOB Group { children [ Shape { geometry Sphere { radius 0.012 } }\n"
-                              "  Transform { translation 0.008 0 0.015 children Shape { appearance Appearance { "
-                              "material Material { diffuseColor 1 0 0 } } geometry Cylinder { radius 0.003 height "
-                              "0.03 } } } ] }"
-                            : "USE KNOB")
+                 << (x == 0 ? knobDefinition("0.008") : "USE KNOB")
                  << " }\n";
         text << "] } }\n";
     }
@@ -108,10 +109,7 @@ std::string writeStations(const std::string& dir)
         text << "DEF STATION Group { children [ Shape { geometry Box { size 0.4 0.1 0.01 } }\n";
         for (int i = 0; i < 6; ++i)
             text << " DEF K" << i << " Transform { translation " << 0.07 * i - 0.175 << " 0 0.012 children "
-                 << (i == 0 ? "DEF KNOB Group { children [ Shape { geometry Sphere { radius 0.012 } }\n"
-                              "  Transform { translation 0.004 0 0.015 children Shape { geometry Cylinder { "
-                              "radius 0.003 height 0.03 } } } ] }"
-                            : "USE KNOB")
+                 << (i == 0 ? knobDefinition("0.004") : "USE KNOB")
                  << " }\n";
         text << "] } }\n";
     }
