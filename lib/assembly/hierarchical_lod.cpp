@@ -1,6 +1,7 @@
 #include "assembly/hierarchical_lod.h"
 
 #include "assembly/cluster_copies.h"
+#include "assembly/merged_levels.h"
 #include "assembly/parallel_tasks.h"
 
 #include "lod/lod_chain.h"
@@ -16,14 +17,6 @@ namespace cadlod {
 namespace {
 
 using flt::Vec3d;
-
-Vec3d transformed(const flt::Mat4d& m, const Vec3d& p)
-{
-    Vec3d out{};
-    for (int r = 0; r < 3; ++r)
-        out[r] = m[r][0] * p[0] + m[r][1] * p[1] + m[r][2] * p[2] + m[r][3];
-    return out;
-}
 
 double largestScale(const flt::Mat4d& m)
 {
@@ -43,7 +36,7 @@ Box3 placedBox(const flt::Level& level, const flt::Mat4d& m)
     if (local.empty())
         return placed;
     for (int corner = 0; corner < 8; ++corner)
-        placed.add(transformed(m, {corner & 1 ? local.hi[0] : local.lo[0], corner & 2 ? local.hi[1] : local.lo[1],
+        placed.add(flt::transformed(m, {corner & 1 ? local.hi[0] : local.lo[0], corner & 2 ? local.hi[1] : local.lo[1],
                                    corner & 4 ? local.hi[2] : local.lo[2]}));
     return placed;
 }
@@ -67,184 +60,7 @@ struct ClusterWork {
     std::size_t mergedTriangles = 0;  // the simplified proxies' input
 };
 
-// The colour triangle t is drawn with: its vertices' where they carry one (all three alike,
-// asOneDrawable), else its face's.
-const Rgba& triangleColour(const flt::Part& part, std::size_t t)
-{
-    return part.hasVertexColors() ? part.vertexColors[part.triangles[t][0]] : part.colorOf(t);
-}
-
-// A level as one part named `name` whose vertices carry the colours: one Mesh record, so
-// one draw call, however many colours it has (a Mesh record has one colour of its own). A
-// vertex where colours meet is written once per colour. A user picks a placement, never
-// one colour of a part.
-flt::Level asOneDrawable(flt::Level level, const std::string& name)
-{
-    if (level.parts.size() < 2 && (level.parts.empty() || !level.parts.front().hasTriangleColors()))
-        return level;
-    flt::Part one;
-    one.name = name;
-    one.color = level.parts.front().color;
-    const bool normals = std::all_of(level.parts.begin(), level.parts.end(),
-                                     [](const flt::Part& p) { return p.hasNormals(); });
-    for (const flt::Part& part : level.parts) {
-        std::map<std::pair<std::uint32_t, Rgba>, std::uint32_t> index;
-        for (std::size_t t = 0; t < part.triangles.size(); ++t) {
-            const Rgba& colour = triangleColour(part, t);
-            flt::Triangle out;
-            for (int c = 0; c < 3; ++c) {
-                const std::uint32_t v = part.triangles[t][c];
-                const auto [at, added] = index.emplace(std::make_pair(v, colour), std::uint32_t(one.positions.size()));
-                if (added) {
-                    one.positions.push_back(part.positions[v]);
-                    one.vertexColors.push_back(colour);
-                    if (normals)
-                        one.normals.push_back(part.normals[v]);
-                }
-                out[c] = at->second;
-            }
-            one.triangles.push_back(out);
-        }
-    }
-    level.parts.assign(1, std::move(one));
-    return level;
-}
-
-// The parts of some levels, placed, merged into one part per colour about `centre`.
-class MergedParts {
-public:
-    explicit MergedParts(const Vec3d& centre) : centre_(centre) {}
-
-    void add(const flt::Level& level, const flt::Mat4d& m, bool mirrored)
-    {
-        for (const flt::Part& part : level.parts)
-            addPart(part, m, mirrored);
-    }
-
-    std::size_t triangles() const { return triangles_; }
-    std::vector<vrml::Part> take() { return std::move(parts_); }
-
-private:
-    void addPart(const flt::Part& part, const flt::Mat4d& m, bool mirrored)
-    {
-        std::map<std::size_t, std::vector<std::uint32_t>> remaps;  // per merged part
-        for (std::size_t t = 0; t < part.triangles.size(); ++t) {
-            const std::size_t target = partFor(triangleColour(part, t));
-            std::vector<std::uint32_t>& remap = remaps[target];
-            remap.resize(part.positions.size(), kUnset);
-            vrml::Part& out = parts_[target];
-            flt::Triangle tri = part.triangles[t];
-            if (mirrored)
-                std::swap(tri[1], tri[2]);
-            for (std::uint32_t v : tri) {
-                if (remap[v] == kUnset) {
-                    remap[v] = std::uint32_t(out.positions.size());
-                    const Vec3d p = transformed(m, part.positions[v]);
-                    out.positions.push_back({float(p[0] - centre_[0]), float(p[1] - centre_[1]),
-                                             float(p[2] - centre_[2])});
-                }
-                out.triangles.push_back(remap[v]);
-            }
-            ++triangles_;
-        }
-    }
-
-    std::size_t partFor(const Rgba& colour)
-    {
-        const auto found = byColour_.find(colour);
-        if (found != byColour_.end())
-            return found->second;
-        vrml::Part part;
-        part.color = colour;
-        part.name = "colour " + std::to_string(parts_.size() + 1);
-        parts_.push_back(std::move(part));
-        return byColour_[colour] = parts_.size() - 1;
-    }
-
-    static constexpr std::uint32_t kUnset = std::numeric_limits<std::uint32_t>::max();
-    Vec3d centre_;
-    std::vector<vrml::Part> parts_;
-    std::map<Rgba, std::size_t> byColour_;
-    std::size_t triangles_ = 0;
-};
-
-// Levels placed in the model and appended into one part whose vertices carry the colours:
-// one drawable, its pieces unchanged.
-class LevelMerger {
-public:
-    void add(const flt::Level& level, const flt::Mat4d& m, bool mirrored)
-    {
-        vrml::Mat4 placement;
-        placement.m = m;
-        const vrml::Mat4 normalMatrix = placement.normalMatrix();
-        for (const flt::Part& part : level.parts) {
-            const auto first = std::uint32_t(out_.positions.size());
-            normals_ = normals_ && part.hasNormals();
-            for (std::size_t v = 0; v < part.positions.size(); ++v) {
-                out_.positions.push_back(transformed(m, part.positions[v]));
-                out_.vertexColors.push_back(part.hasVertexColors() ? part.vertexColors[v] : part.color);
-                if (normals_)
-                    out_.normals.push_back(turned(normalMatrix, part.normals[v]));
-            }
-            for (std::size_t t = 0; t < part.triangles.size(); ++t) {
-                flt::Triangle tri = part.triangles[t];
-                for (std::uint32_t& v : tri)
-                    v += first;
-                if (mirrored)
-                    std::swap(tri[1], tri[2]);
-                out_.triangles.push_back(tri);
-            }
-            faceColours_ = faceColours_ || (part.hasTriangleColors() && !part.hasVertexColors());
-        }
-    }
-
-    bool empty() const { return out_.triangles.empty(); }
-
-    // Null when a piece had colours per face only, which one Mesh record cannot draw.
-    bool take(const std::string& name, const Vec3d& centre, flt::Level& level)
-    {
-        if (faceColours_)
-            return false;
-        if (!normals_)
-            out_.normals.clear();
-        out_.name = name;
-        if (!out_.vertexColors.empty())
-            out_.color = out_.vertexColors.front();
-        level.parts.assign(1, std::move(out_));
-        level.center = centre;
-        return true;
-    }
-
-private:
-    static flt::Vec3f turned(const vrml::Mat4& normalMatrix, const flt::Vec3f& v)
-    {
-        const vrml::Vec3 n = normalMatrix.transformVector({v[0], v[1], v[2]});
-        const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-        const double k = length > 0 ? 1.0 / length : 1.0;
-        return {float(n.x * k), float(n.y * k), float(n.z * k)};
-    }
-
-    flt::Part out_;
-    bool normals_ = true;
-    bool faceColours_ = false;
-};
-
-// A level's draw calls: one per colour of each part (a Mesh record per colour).
-std::size_t drawables(const flt::Level& level)
-{
-    std::size_t n = 0;
-    for (const flt::Part& part : level.parts) {
-        if (!part.hasTriangleColors()) {
-            ++n;
-            continue;
-        }
-        std::vector<Rgba> colours(part.triangleColors);
-        std::sort(colours.begin(), colours.end());
-        n += std::size_t(std::unique(colours.begin(), colours.end()) - colours.begin());
-    }
-    return n;
-}
-
+// What drawing a level costs: its triangles, and its draw calls weighed as triangles.
 double drawCost(const flt::Level& level)
 {
     return double(level.triangleCount()) + kDrawCallTriangles * double(drawables(level));
@@ -303,7 +119,7 @@ private:
             work_[n].radius = nodes_[n].box.halfDiagonal();
             return;
         }
-        work_[n].centre = transformed(copies_[n].move, work_[original].centre);
+        work_[n].centre = flt::transformed(copies_[n].move, work_[original].centre);
         work_[n].radius = work_[original].radius;
     }
 
@@ -491,7 +307,7 @@ private:
         for (std::size_t p : nodes_[m].items) {
             const flt::PartPlacement& placement = c_.model.placements[p];
             const flt::Level& finest = c_.model.definitions[placement.definition].levels.front();
-            const double offset = distance(centre, transformed(placement.matrix, finest.center));
+            const double offset = distance(centre, flt::transformed(placement.matrix, finest.center));
             addPlacedLevel(placement, levelIndexAt(placement, std::max(0.0, from - offset)), merger, error);
         }
         for (std::size_t child : nodes_[m].children) {

@@ -15,6 +15,14 @@ Mat4d multiply(const Mat4d& a, const Mat4d& b)
     return out;
 }
 
+Vec3d transformed(const Mat4d& m, const Vec3d& p)
+{
+    Vec3d out{};
+    for (int r = 0; r < 3; ++r)
+        out[r] = m[r][0] * p[0] + m[r][1] * p[1] + m[r][2] * p[2] + m[r][3];
+    return out;
+}
+
 double determinant3(const Mat4d& m)
 {
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +

@@ -122,8 +122,9 @@ TEST(CliOutputs, KilledRunLeavesNoTruncatedOutput)
     const std::string out = dir + "/d.flt";
     killWhileWriting({"convert", kDemo, "-o", out, "--unit", "mm", "--lod", "50 90"});
     // Killed before the rename: no output at all; after it: a whole file. Never a part.
-    if (fileExists(out))
+    if (fileExists(out)) {
         EXPECT_TRUE(readsBack(out));
+    }
     for (const std::string& name : filesIn(dir))
         EXPECT_TRUE(name == "d.flt" || name.rfind(".d.flt.tmp-", 0) == 0) << name;
 

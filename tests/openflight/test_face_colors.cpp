@@ -200,6 +200,7 @@ TEST_P(FaceColors, VertexColorsSurviveWhereTheInputHasThem)
     const flt::Part& p = back.levels[0].parts[0];
     ASSERT_TRUE(p.hasVertexColors());
     for (std::size_t i = 0; i < p.positions.size(); ++i)
-        if (p.positions[i][0] == 0 && p.positions[i][1] == 0)
+        if (p.positions[i][0] == 0 && p.positions[i][1] == 0) {
             EXPECT_EQ(cornerName(p.vertexColors[i]), "red");
+        }
 }
