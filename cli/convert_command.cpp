@@ -296,6 +296,7 @@ nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
             {"mergedTriangles", h.inputTriangles},
             {"copiedClusters", h.copied},
             {"turnedCopies", h.turned},
+            {"mirroredCopies", h.mirrored},
             {"clusterParts", clusterTree(a).leafItems},
             {"fanout", clusterTree(a).fanout},
             {"largeShare", clusterTree(a).largeShare}};
@@ -311,10 +312,10 @@ void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
     std::fprintf(stderr,
                  "cadlod: hlod %s: %zu clusters of up to %zu placements (%zu per node%s), %zu with proxies: %zu "
                  "proxy levels drawing %zu meshes of %zu triangles, merged from %zu; %zu clusters copies of others "
-                 "(%zu turned), drawing their meshes moved\n",
+                 "(%zu turned, %zu mirrored), drawing their meshes moved\n",
                  a.hlod.c_str(), h.clusters, clusterTree(a).leafItems, clusterTree(a).fanout,
                  clusterTree(a).largeShare > 0 ? ", the largest above" : "", h.proxied,
-                 h.proxyLevels, h.proxyShapes, h.proxyTriangles, h.inputTriangles, h.copied, h.turned);
+                 h.proxyLevels, h.proxyShapes, h.proxyTriangles, h.inputTriangles, h.copied, h.turned, h.mirrored);
 }
 
 // An assembly that shares geometry: each distinct part simplified once, placed by instances.

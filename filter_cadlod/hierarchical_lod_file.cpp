@@ -107,11 +107,13 @@ void logConversion(MeshFilterInterface& plugin, const Converted& c, const Cluste
     const std::size_t placements = c.conversion.model.placements.size();
     plugin.Log("CAD LOD set, per part and cluster: %zu distinct parts in %zu placements, each part's chain once; "
                "%zu clusters of up to %zu placements (%zu per node%s), %zu with proxies: %zu proxy levels drawing %zu "
-               "meshes of %zu triangles, merged from %zu; %zu clusters copies of others (%zu turned), drawing their "
+               "meshes of %zu triangles, merged from %zu; %zu clusters copies of others (%zu turned, %zu mirrored), "
+               "drawing their "
                "meshes moved",
                c.conversion.parts.size(), placements, c.hierarchy.clusters, tree.leafItems, tree.fanout,
                tree.largeShare > 0 ? ", the largest above" : "", c.hierarchy.proxied, c.hierarchy.proxyLevels,
-               c.hierarchy.proxyShapes, c.hierarchy.proxyTriangles, c.hierarchy.inputTriangles, c.hierarchy.copied, c.hierarchy.turned);
+               c.hierarchy.proxyShapes, c.hierarchy.proxyTriangles, c.hierarchy.inputTriangles, c.hierarchy.copied, c.hierarchy.turned,
+               c.hierarchy.mirrored);
     plugin.Log("CAD LOD set, per part and cluster: wrote %s: %zu bytes, %zu triangles in %.2f s (the document is "
                "unchanged: a layer cannot hold instances)",
                qUtf8Printable(output), written.bytes, written.triangles, seconds);

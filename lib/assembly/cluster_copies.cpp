@@ -35,6 +35,21 @@ Mat4d snappedToAxes(Mat4d move, const Box3& from, const Box3& to)
     return move;
 }
 
+// Whether `move` keeps lengths (a turn or a mirror, then a shift): a copy scaled up would
+// show its original's proxies' error scaled too.
+bool keepsLengths(const Mat4d& move)
+{
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+            double dot = 0;
+            for (int r = 0; r < 3; ++r)
+                dot += move[r][a] * move[r][b];
+            if (std::abs(dot - (a == b ? 1.0 : 0.0)) > kAxisSlack)
+                return false;
+        }
+    return true;
+}
+
 // How far apart two placements of one part put its vertices, at most (`reach`: how far
 // they lie from the part's origin).
 double placedApart(const Mat4d& a, const Mat4d& b, double reach)
@@ -157,9 +172,9 @@ private:
 
     // The moves that may make tree node n, its placements `mine` (sorted by part and x), a
     // copy of original o (in the output): each puts o's first placement of its rarest part
-    // onto one of n's of that part, as a turn (no mirror: a mirrored proxy would show its
-    // faces inside out) and a shift. Plain moves first, so that a copy that is also
-    // symmetric is found moved, not turned.
+    // onto one of n's of that part, as a turn or a mirror and a shift. Plain moves first,
+    // then turns, then mirrors, so that a copy that is also symmetric is found moved, not
+    // turned, and turned, not mirrored.
     std::vector<Mat4d> movesOnto(std::size_t o, std::size_t n, const std::vector<std::size_t>& mine) const
     {
         const std::vector<std::size_t>& theirs = below_[treeNodeOf_.at(o)];
@@ -173,9 +188,10 @@ private:
                 continue;
             const Mat4d move =
                 snappedToAxes(flt::multiply(placements_[q].matrix, undo), out_.nodes[o].box, tree_[n].box);
-            if (flt::determinant3(move) > 0 && std::find(moves.begin(), moves.end(), move) == moves.end())
+            if (keepsLengths(move) && std::find(moves.begin(), moves.end(), move) == moves.end())
                 moves.push_back(move);
         }
+        std::stable_partition(moves.begin(), moves.end(), [](const Mat4d& m) { return flt::determinant3(m) > 0; });
         std::stable_partition(moves.begin(), moves.end(), [](const Mat4d& m) { return !flt::turns(m); });
         return moves;
     }
@@ -240,6 +256,8 @@ private:
 }  // namespace
 
 bool ClusterCopy::turned() const { return flt::turns(move); }
+
+bool ClusterCopy::mirrored() const { return flt::determinant3(move) < 0; }
 
 SharedCopies shareCopies(const std::vector<ClusterNode>& tree, const std::vector<flt::PartPlacement>& placements,
                          const std::vector<Box3>& placedBoxes, const std::vector<double>& partReach, double tolerance)

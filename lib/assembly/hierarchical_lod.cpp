@@ -214,7 +214,8 @@ private:
         work_[n].selected = from.selected;
         work_[n].from = from.from;
         ++stats_.copied;
-        stats_.turned += copies_[n].turned();
+        stats_.turned += copies_[n].turned() && !copies_[n].mirrored();
+        stats_.mirrored += copies_[n].mirrored();
     }
 
     // Cluster n's proxy candidates, where moveOf(n) puts them: a copy's are its original's.
@@ -316,7 +317,7 @@ private:
                 collectAt(child, centre, from, merger, error);
                 continue;
             }
-            merger.add(proxy->level, moveOf(child), false);
+            merger.add(proxy->level, moveOf(child), copies_[child].mirrored());
             error = std::max(error, proxy->error);
         }
     }
@@ -399,7 +400,7 @@ private:
                 gather(child, allowance, merged, inputError);
                 continue;
             }
-            merged.add(best->level, moveOf(child), false);
+            merged.add(best->level, moveOf(child), copies_[child].mirrored());
             inputError = std::max(inputError, best->error);
         }
     }

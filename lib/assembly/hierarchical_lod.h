@@ -98,6 +98,7 @@ struct HierarchyStats {
     std::size_t inputTriangles = 0;  // merged into proxies, before simplifying
     std::size_t copied = 0;          // clusters whose proxies were moved from a copy's, not made
     std::size_t turned = 0;          // of those, copies turned as well as moved
+    std::size_t mirrored = 0;        // of those, copies seen in a mirror
 };
 
 // Puts c.model's placements into clusters with proxies, each proxy made a span of `progress`.

@@ -14,7 +14,8 @@ std::size_t finestTriangles(const PartDefinition& d)
     return d.levels.empty() ? 0 : d.levels.front().triangleCount();
 }
 
-// A definition as written: the part, and whether it is seen in a mirror.
+// A part definition or a proxy shape as written: its index, and whether it is seen in a
+// mirror (its faces then turned back).
 using WrittenForm = std::pair<std::size_t, bool>;
 
 class InstancedWriter {
@@ -25,10 +26,9 @@ public:
     {
         for (const PartPlacement& p : model.placements)
             ++uses_[{p.definition, p.mirrored()}];
-        shapeUses_.assign(model.proxyShapes.size(), 0);
         for (const PlacementCluster& c : model.clusters)
             for (std::size_t shape : c.shapes)
-                ++shapeUses_[shape];
+                ++shapeUses_[{shape, determinant3(c.move) < 0}];
     }
 
     bool write(std::string& error)
@@ -88,12 +88,14 @@ private:
     }
 
     // Each proxy's LOD record, holding its shape: written there when no other cluster draws
-    // it, else referenced (the Instance Definition written before its first reference).
+    // it, else referenced (the Instance Definition written before its first reference). A
+    // copy seen in a mirror draws the shape's mirrored form: its faces turned back.
     void writeProxies(const PlacementCluster& c)
     {
         const bool moved = !isIdentity(c.move);
+        const bool mirrored = determinant3(c.move) < 0;
         for (std::size_t i = 0; i < c.proxies.size(); ++i) {
-            const std::size_t shape = c.shapes[i];
+            const WrittenForm shape{c.shapes[i], mirrored};
             const bool shared = shapeUses_[shape] > 1 && defineShapeOnce(shape);
             const Level& range = c.proxies[i];
             writeLod(w_, range.name, range.switchIn, range.switchOut, range.center);
@@ -111,7 +113,7 @@ private:
                 writeInstanceReference(w_, shapeNumbers_.at(shape));
                 ++stats_.instanceReferences;
             } else {
-                levels_.writeGeometry(model_.proxyShapes[shape]);
+                levels_.writeGeometry(model_.proxyShapes[shape.first], shape.second);
             }
             if (moved)
                 writePop(w_);
@@ -122,7 +124,7 @@ private:
 
     // The Instance Definition of a proxy shape, before its first reference; false when the
     // 16-bit instance numbers are all taken (the shape is then written at each use).
-    bool defineShapeOnce(std::size_t shape)
+    bool defineShapeOnce(const WrittenForm& shape)
     {
         if (shapeNumbers_.count(shape))
             return true;
@@ -132,7 +134,7 @@ private:
         shapeNumbers_[shape] = number;
         writeInstanceDefinition(w_, number);
         writePush(w_);
-        levels_.writeGeometry(model_.proxyShapes[shape]);
+        levels_.writeGeometry(model_.proxyShapes[shape.first], shape.second);
         writePop(w_);
         ++stats_.instanceDefinitions;
         return true;
@@ -207,8 +209,8 @@ private:
     LevelWriter levels_;
     std::map<WrittenForm, int> uses_;
     std::map<WrittenForm, int> numbers_;
-    std::vector<int> shapeUses_;             // per proxy shape, the clusters that draw it
-    std::map<std::size_t, int> shapeNumbers_;  // the proxy shapes defined, their instance numbers
+    std::map<WrittenForm, int> shapeUses_;     // per proxy shape and mirror, the clusters that draw it
+    std::map<WrittenForm, int> shapeNumbers_;  // the proxy shapes defined, their instance numbers
 };
 
 // A tree below clusters[0] that holds every placement once, its proxies' ranges usable.

@@ -111,9 +111,9 @@ void LevelWriter::writeLevels(const std::vector<Level>& levels, bool lodRecords,
         writeLevel(levels[l], l, lodRecords);
 }
 
-void LevelWriter::writeGeometry(const Level& level)
+void LevelWriter::writeGeometry(const Level& level, bool reversed)
 {
-    reversed_ = false;
+    reversed_ = reversed;
     writeLevel(level, 0, false);
 }
 

@@ -49,8 +49,8 @@ public:
     void writeSharedVertexPalette(const std::vector<Level>& levels);
     // `reversed`: every triangle turned round, for a mirrored placement to keep its faces out.
     void writeLevels(const std::vector<Level>& levels, bool lodRecords, bool reversed = false);
-    // One level's Objects, without a LOD record.
-    void writeGeometry(const Level& level);
+    // One level's Objects, without a LOD record (`reversed` as for writeLevels).
+    void writeGeometry(const Level& level, bool reversed = false);
 
 private:
     void writeLevel(const Level& level, std::size_t index, bool lod);

@@ -1,6 +1,6 @@
 // Clusters that are copies of others (cluster_copies.h): moved, or turned and moved as a
-// rack turned to face an aisle, with turns written to a few decimals, or set askew; and
-// clusters alike in parts that are not copies.
+// rack turned to face an aisle, with turns written to a few decimals, or set askew, or seen
+// in a mirror; and clusters alike in parts that are not copies.
 #include "assembly/cluster_copies.h"
 
 #include <gtest/gtest.h>
@@ -155,19 +155,31 @@ TEST(ClusterCopies, AClusterTurnedByAnyAngleIsACopy)
         expectTurnedCopyFound(turn, 1, 3);
 }
 
-// A rack seen in a mirror has the same parts, each placed alike but mirrored: its proxies
-// would be the original's turned inside out, so it is no copy.
-TEST(ClusterCopies, AMirroredClusterIsNoCopy)
+// A rack seen in a mirror (x -> 20 - x) has the same parts, each placed alike but mirrored:
+// it is a copy, by a mirror, drawn with its faces turned back by the writer. Scaled up, the
+// same rack is no copy: its proxies' error would scale too.
+TEST(ClusterCopies, AMirroredClusterIsAMirroredCopyAndAScaledOneIsNone)
 {
-    std::vector<flt::PartPlacement> placements = row(0, 0);
+    std::vector<flt::PartPlacement> mirrored = row(0, 0), scaled = row(0, 0);
     for (flt::PartPlacement p : row(0, 0)) {
+        flt::PartPlacement q = p;
         for (int c = 0; c < 4; ++c)
-            p.matrix[0][c] = -p.matrix[0][c];  // x -> -x
+            p.matrix[0][c] = -p.matrix[0][c];
         p.matrix[0][3] += 20;
-        placements.push_back(p);
+        mirrored.push_back(p);
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 4; ++c)
+                q.matrix[r][c] *= 2;
+        q.matrix[0][3] += 20;
+        scaled.push_back(q);
     }
-    const std::vector<ClusterCopy> copies = twoLeaves(placements, 3).copies;
-    EXPECT_EQ(copies[2].original, 2u);
+    const std::vector<ClusterCopy> copies = twoLeaves(mirrored, 3).copies;
+    ASSERT_EQ(copies[2].original, 1u);
+    EXPECT_TRUE(copies[2].mirrored());
+    EXPECT_LT(flt::determinant3(copies[2].move), 0);
+    expectMovedOnto(copies[2], mirrored, 3);
+    EXPECT_FALSE(copies[1].mirrored());
+    EXPECT_EQ(twoLeaves(scaled, 3).copies[2].original, 2u);
 }
 
 // The same parts in the same box, but the lone part in the middle: no turn or move makes

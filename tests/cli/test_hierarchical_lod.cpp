@@ -34,13 +34,13 @@ namespace {
 
 constexpr int kColumns = 8, kRows = 8, kLayers = 2;
 
-// A knob: a sphere and a red pin `pinX` off its centre, DEF'd as KNOB.
-std::string knobDefinition(const char* pinX)
+// A knob: a sphere and a red pin `pin` ("x y") off its centre, DEF'd as KNOB.
+std::string knobDefinition(const char* pin)
 {
     return std::string("DEF KNOB Group { children [ Shape { geometry Sphere { radius 0.012 } }\n"
                        "  Transform { translation ") +
-           pinX +
-           " 0 0.015 children Shape { appearance Appearance { material Material { diffuseColor 1 0 0 } } "
+           pin +
+           " 0.015 children Shape { appearance Appearance { material Material { diffuseColor 1 0 0 } } "
            "geometry Cylinder { radius 0.003 height 0.03 } } } ] }";
 }
 
@@ -55,7 +55,7 @@ std::string writeGrid(const std::string& dir)
             for (int x = 0; x < kColumns; ++x, ++n) {
                 text << "DEF P" << n << " Transform { translation " << 0.08 * x << ' ' << 0.08 * y << ' ' << 0.1 * z
                      << " children ";
-                text << (n == 0 ? knobDefinition("0") : "USE KNOB");
+                text << (n == 0 ? knobDefinition("0 0") : "USE KNOB");
                 text << " }\n";
             }
     const std::string path = dir + "/grid.wrl";
@@ -66,14 +66,14 @@ std::string writeGrid(const std::string& dir)
 // A row of 8 knobs, their pins off centre, DEF'd once and USE'd 8 times 0.6 m apart (so
 // that each row is a cluster); every other row moved `shift` along x and turned about z by
 // `turn` (radians, as written), as racks facing across an aisle (a half turn) or set
-// askew.
+// askew, or seen in a mirror (`turn` "mirror": x -> -x).
 std::string writeTurnedRows(const std::string& dir, const std::string& shift, const std::string& turn)
 {
     std::ostringstream text;
     text << "#VRML V2.0 utf8\n";
     for (int y = 0; y < 8; ++y) {
         text << "Transform { translation " << (y % 2 ? shift : "0") << ' ' << 0.6 * y << " 0"
-             << (y % 2 ? " rotation 0 0 1 " + turn : "")
+             << (y % 2 ? (turn == "mirror" ? " scale -1 1 1" : " rotation 0 0 1 " + turn) : "")
              << " children ";
         if (y > 0) {
             text << "USE ROW }\n";
@@ -82,7 +82,7 @@ std::string writeTurnedRows(const std::string& dir, const std::string& shift, co
         text << "DEF ROW Group { children [\n";
         for (int x = 0; x < 8; ++x)
             text << " Transform { translation " << 0.08 * x << " 0 0 children "
-                 << (x == 0 ? knobDefinition("0.008") : "USE KNOB")
+                 << (x == 0 ? knobDefinition("0.008 0.005") : "USE KNOB")
                  << " }\n";
         text << "] } }\n";
     }
@@ -109,7 +109,7 @@ std::string writeStations(const std::string& dir)
         text << "DEF STATION Group { children [ Shape { geometry Box { size 0.4 0.1 0.01 } }\n";
         for (int i = 0; i < 6; ++i)
             text << " DEF K" << i << " Transform { translation " << 0.07 * i - 0.175 << " 0 0.012 children "
-                 << (i == 0 ? knobDefinition("0.004") : "USE KNOB")
+                 << (i == 0 ? knobDefinition("0.004 0") : "USE KNOB")
                  << " }\n";
         text << "] } }\n";
     }
@@ -501,6 +501,22 @@ TEST(CliHierarchicalLod, ProxiesOfTurnedCopiesAreWithinTheirErrorWhereTheyStand)
         EXPECT_GE(stats.copied, stats.turned + 3) << turn;
         EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels) << turn;
     }
+}
+
+// Rows seen in a mirror are copies of the first row by a mirror (the pins, off centre along
+// both axes, tell a mirror from a half turn): their proxies are the first row's mirrored,
+// and hold their error where they stand.
+TEST(CliHierarchicalLod, ProxiesOfMirroredCopiesAreWithinTheirErrorWhereTheyStand)
+{
+    AssemblyConversion c = convertFile(writeTurnedRows(freshDirectory("hlod_mirrored"), "0.56", "mirror"));
+    HierarchyOptions options;
+    options.tree.leafItems = 8;
+    const HierarchyStats stats = buildHierarchy(c, options, PartWelding{}, chainFrom);
+    ASSERT_GE(stats.proxyLevels, 2u);
+    EXPECT_GE(stats.mirrored, 3u);
+    EXPECT_EQ(stats.turned, 0u);
+    EXPECT_GE(stats.copied, stats.mirrored + 3);
+    EXPECT_EQ(expectEveryProxyWithinItsError(c.model, options.view), stats.proxyLevels);
 }
 
 // The fewest-calls mode's merged proxies hold each part at a level chosen for some distance:

@@ -297,6 +297,44 @@ TEST(InstancedWriter, AProxyShapeOfACopyIsWrittenOnceAndDrawnWhereItsMovePutsIt)
     std::remove(alone.c_str());
 }
 
+// The second cluster seen in a mirror (x -> 20 - x): it draws the shape's mirrored form, its
+// faces turned back, so that every face OSG draws of either proxy faces out of its cube.
+// Two mirrored copies share that form, written once.
+TEST(InstancedWriter, AProxyOfAMirroredCopyFacesOut)
+{
+    flt::InstancedModel m = twoClustersOneProxyShape();
+    m.clusters[2].move = {{{-1, 0, 0, 20}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
+    flt::InstancedWriteStats stats;
+    const std::string path = writeToTemp(m, stats);
+    EXPECT_EQ(stats.instanceDefinitions, 1u);  // the cube; each form of the shape drawn once
+    const OsgAssemblyProbe osg = probeAssemblyWithOsg(path, "asm");
+    ASSERT_TRUE(osg.loaded);
+    ASSERT_EQ(osg.finestTriangles.size(), 2u * 12);
+    std::size_t nearCopy = 0;
+    for (const auto& t : osg.finestTriangles) {
+        const std::array<double, 3> centroid{(t[0][0] + t[1][0] + t[2][0]) / 3, (t[0][1] + t[1][1] + t[2][1]) / 3,
+                                             (t[0][2] + t[1][2] + t[2][2]) / 3};
+        const double cubeCentre = centroid[0] > 10 ? 18 : 2;
+        nearCopy += centroid[0] > 10;
+        const auto u = sub(t[1], t[0]), v = sub(t[2], t[0]);
+        const std::array<double, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+        const double outward = n[0] * (centroid[0] - cubeCentre) + n[1] * centroid[1] + n[2] * centroid[2];
+        EXPECT_GT(outward, 0) << "a face of the proxy at x = " << cubeCentre << " turns inward";
+    }
+    EXPECT_EQ(nearCopy, 12u);
+    std::remove(path.c_str());
+
+    m.clusters.push_back(m.clusters[2]);
+    m.clusters.back().name = "c.3";
+    m.clusters.back().placements.clear();
+    m.clusters.back().proxies[0].name = "c.3 proxy 1";
+    m.clusters[0].clusters.push_back(3);
+    const std::string twice = writeToTemp(m, stats);
+    EXPECT_EQ(stats.instanceDefinitions, 2u);  // the cube, the shape's mirrored form
+    EXPECT_EQ(stats.instanceReferences, 4u + 2u);
+    std::remove(twice.c_str());
+}
+
 TEST(InstancedWriter, AReferenceWithoutItsDefinitionIsAnError)
 {
     std::vector<std::uint8_t> bytes;
