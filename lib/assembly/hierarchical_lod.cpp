@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -36,8 +35,9 @@ Box3 placedBox(const flt::Level& level, const flt::Mat4d& m)
     if (local.empty())
         return placed;
     for (int corner = 0; corner < 8; ++corner)
-        placed.add(flt::transformed(m, {corner & 1 ? local.hi[0] : local.lo[0], corner & 2 ? local.hi[1] : local.lo[1],
-                                   corner & 4 ? local.hi[2] : local.lo[2]}));
+        placed.add(flt::transformed(m, {corner & 1 ? local.hi[0] : local.lo[0],
+                                        corner & 2 ? local.hi[1] : local.lo[1],
+                                        corner & 4 ? local.hi[2] : local.lo[2]}));
     return placed;
 }
 
