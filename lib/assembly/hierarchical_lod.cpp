@@ -97,6 +97,9 @@ public:
         for (std::size_t n = 0; n < nodes_.size(); ++n)
             for (std::size_t child : nodes_[n].children)
                 parent_[child] = n;
+        drawnAlike_.assign(nodes_.size(), {});
+        for (std::size_t n = 0; n < nodes_.size(); ++n)
+            drawnAlike_[copies_[n].original].push_back(n);
         makeProxiesChildrenFirst();
         c_.model.clusters.resize(nodes_.size());
         if (!nodes_.empty())
@@ -255,17 +258,22 @@ private:
     }
 
     // Past where its parent's proxy has surely taken over, cluster n's proxy is never drawn,
-    // and its chain stops there: as a distance at which the proxy's own error is one pixel,
-    // like `first`. The root's chain goes on to the far field (0).
+    // nor is a copy's past where the copy's parent takes over. Original n's chain stops at the
+    // farthest of those: as a distance at which the proxy's own error is one pixel, like
+    // `first`. The root's chain goes on to the far field (0).
     double farthestDrawn(std::size_t n, double inputError, double first) const
     {
-        if (n == 0)
-            return 0.0;
-        const Box3& parent = nodes_[parent_[n]].box;
-        const double takeOver = kParentTakeOverMargin * switchAtNearestPoint(0.0, parent.halfDiagonal()) +
-                                distance(parent.center(), work_[n].centre);
-        const double farthest = takeOver - work_[n].radius - projectedErrorDistance(inputError, options_.view);
-        return std::max(farthest, kParentTakeOverMargin * first);
+        double farthest = kParentTakeOverMargin * first;
+        for (std::size_t c : drawnAlike_[n]) {
+            if (c == 0)
+                return 0.0;
+            const Box3& parent = nodes_[parent_[c]].box;
+            const double takeOver = kParentTakeOverMargin * switchAtNearestPoint(0.0, parent.halfDiagonal()) +
+                                    distance(parent.center(), work_[c].centre);
+            farthest =
+                std::max(farthest, takeOver - work_[c].radius - projectedErrorDistance(inputError, options_.view));
+        }
+        return farthest;
     }
 
     std::size_t depthOf(std::size_t n) const
@@ -537,6 +545,7 @@ private:
     std::vector<ClusterNode> nodes_;
     std::vector<std::size_t> parent_;  // the root's: 0
     std::vector<ClusterCopy> copies_;  // of each cluster, the cluster it is a copy of (or itself)
+    std::vector<std::vector<std::size_t>> drawnAlike_;  // of each original, itself and its copies
     std::vector<ClusterWork> work_;
     std::map<std::pair<std::size_t, std::size_t>, std::size_t> shapes_;  // (cluster, candidate) -> proxy shape
     HierarchyStats stats_;
