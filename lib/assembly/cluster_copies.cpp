@@ -14,6 +14,9 @@ using flt::Mat4d;
 // written "3.14159"); placedAlike then says whether the parts still land.
 constexpr double kAxisSlack = 1e-5;
 
+// A move whose columns are unit and square to one another within this keeps lengths.
+constexpr double kLengthSlack = 1e-5;
+
 // `move` with its turn made exactly the axis turn it nearly is, about the centre of box
 // `from`, then shifted to the centre of box `to` (a turn that maps axes onto axes maps the
 // one box onto the other); unchanged when its turn is no axis turn.
@@ -44,7 +47,7 @@ bool keepsLengths(const Mat4d& move)
             double dot = 0;
             for (int r = 0; r < 3; ++r)
                 dot += move[r][a] * move[r][b];
-            if (std::abs(dot - (a == b ? 1.0 : 0.0)) > kAxisSlack)
+            if (std::abs(dot - (a == b ? 1.0 : 0.0)) > kLengthSlack)
                 return false;
         }
     return true;
@@ -191,7 +194,7 @@ private:
             if (keepsLengths(move) && std::find(moves.begin(), moves.end(), move) == moves.end())
                 moves.push_back(move);
         }
-        std::stable_partition(moves.begin(), moves.end(), [](const Mat4d& m) { return flt::determinant3(m) > 0; });
+        std::stable_partition(moves.begin(), moves.end(), [](const Mat4d& m) { return !flt::mirrors(m); });
         std::stable_partition(moves.begin(), moves.end(), [](const Mat4d& m) { return !flt::turns(m); });
         return moves;
     }
@@ -257,7 +260,7 @@ private:
 
 bool ClusterCopy::turned() const { return flt::turns(move); }
 
-bool ClusterCopy::mirrored() const { return flt::determinant3(move) < 0; }
+bool ClusterCopy::mirrored() const { return flt::mirrors(move); }
 
 SharedCopies shareCopies(const std::vector<ClusterNode>& tree, const std::vector<flt::PartPlacement>& placements,
                          const std::vector<Box3>& placedBoxes, const std::vector<double>& partReach, double tolerance)

@@ -206,11 +206,9 @@ private:
             stats_.inputTriangles += work.mergedTriangles;
     }
 
-    // Cluster n's proxies: its original's, moved (and turned) as its parts are
-    // (candidatesOf, moveOf), drawn from the same distances to its centre. Their chain stopped
-    // where the original's parent takes over (farthestDrawn); where this cluster's parent
-    // takes over later, the last level serves on, heavier than it need be but within its
-    // error.
+    // Cluster n's proxies: its original's, moved (and turned or mirrored) as its parts are
+    // (candidatesOf, moveOf), drawn from the same distances to its centre. Their chain went on
+    // to where the last of the original's copies' parents takes over (farthestDrawn).
     void moveCopy(std::size_t n)
     {
         const ClusterWork& from = work_[copies_[n].original];

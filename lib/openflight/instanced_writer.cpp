@@ -3,6 +3,7 @@
 #include "openflight/level_writer.h"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <utility>
 
@@ -28,7 +29,7 @@ public:
             ++uses_[{p.definition, p.mirrored()}];
         for (const PlacementCluster& c : model.clusters)
             for (std::size_t shape : c.shapes)
-                ++shapeUses_[{shape, determinant3(c.move) < 0}];
+                ++shapeUses_[{shape, c.mirrored()}];
     }
 
     bool write(std::string& error)
@@ -93,10 +94,9 @@ private:
     void writeProxies(const PlacementCluster& c)
     {
         const bool moved = !isIdentity(c.move);
-        const bool mirrored = determinant3(c.move) < 0;
         for (std::size_t i = 0; i < c.proxies.size(); ++i) {
-            const WrittenForm shape{c.shapes[i], mirrored};
-            const bool shared = shapeUses_[shape] > 1 && defineShapeOnce(shape);
+            const WrittenForm shape{c.shapes[i], c.mirrored()};
+            const int number = shapeUses_[shape] > 1 ? definedOnce(shapeNumbers_, shape, [&] { writeShape(shape); }) : 0;
             const Level& range = c.proxies[i];
             writeLod(w_, range.name, range.switchIn, range.switchOut, range.center);
             writeLongIdIfNeeded(w_, range.name);
@@ -109,11 +109,11 @@ private:
                 writeMatrix(w_, c.move);
                 writePush(w_);
             }
-            if (shared) {
-                writeInstanceReference(w_, shapeNumbers_.at(shape));
+            if (number) {
+                writeInstanceReference(w_, number);
                 ++stats_.instanceReferences;
             } else {
-                levels_.writeGeometry(model_.proxyShapes[shape.first], shape.second);
+                writeShape(shape);
             }
             if (moved)
                 writePop(w_);
@@ -122,33 +122,37 @@ private:
         stats_.proxyLevels += c.proxies.size();
     }
 
-    // The Instance Definition of a proxy shape, before its first reference; false when the
-    // 16-bit instance numbers are all taken (the shape is then written at each use).
-    bool defineShapeOnce(const WrittenForm& shape)
+    void writeShape(const WrittenForm& shape) { levels_.writeGeometry(model_.proxyShapes[shape.first], shape.second); }
+
+    // The instance number of `form` in `numbers` (a part's or a proxy shape's), its Instance
+    // Definition, holding what `contents` writes, written before its first reference; 0 when
+    // the 16-bit instance numbers are all taken.
+    int definedOnce(std::map<WrittenForm, int>& numbers, const WrittenForm& form, const std::function<void()>& contents)
     {
-        if (shapeNumbers_.count(shape))
-            return true;
-        const int number = nextNumber();
+        const auto known = numbers.find(form);
+        if (known != numbers.end())
+            return known->second;
+        const int number = int(numbers_.size() + shapeNumbers_.size()) + 1;
         if (number > kMaxInstanceNumber)
-            return false;
-        shapeNumbers_[shape] = number;
+            return 0;
+        numbers[form] = number;
         writeInstanceDefinition(w_, number);
         writePush(w_);
-        levels_.writeGeometry(model_.proxyShapes[shape.first], shape.second);
+        contents();
         writePop(w_);
         ++stats_.instanceDefinitions;
-        return true;
+        return number;
     }
-
-    int nextNumber() const { return int(numbers_.size() + shapeNumbers_.size()) + 1; }
 
     bool writePlacement(const PartPlacement& p, std::string& error)
     {
         const WrittenForm form{p.definition, p.mirrored()};
         const bool shared = uses_[form] > 1;
-        int number = 0;
-        if (shared && !defineOnce(form, number, error))
+        const int number = shared ? definedOnce(numbers_, form, [&] { writeLevelsOf(form); }) : 0;
+        if (shared && !number) {
+            error = "more than " + std::to_string(kMaxInstanceNumber) + " shared parts: instance numbers are 16-bit";
             return false;
+        }
         writeGroup(w_, p.name);
         writeLongIdIfNeeded(w_, p.name);
         writeMatrix(w_, p.matrix);
@@ -161,28 +165,6 @@ private:
         }
         writePop(w_);
         ++stats_.placements;
-        return true;
-    }
-
-    // The Instance Definition of `form`, written before its first reference.
-    bool defineOnce(const WrittenForm& form, int& number, std::string& error)
-    {
-        const auto known = numbers_.find(form);
-        if (known != numbers_.end()) {
-            number = known->second;
-            return true;
-        }
-        number = nextNumber();
-        if (number > kMaxInstanceNumber) {
-            error = "more than " + std::to_string(kMaxInstanceNumber) + " shared parts: instance numbers are 16-bit";
-            return false;
-        }
-        numbers_[form] = number;
-        writeInstanceDefinition(w_, number);
-        writePush(w_);
-        writeLevelsOf(form);
-        writePop(w_);
-        ++stats_.instanceDefinitions;
         return true;
     }
 
@@ -283,7 +265,7 @@ bool validate(const InstancedModel& model, const WriteOptions& options, std::str
 
 }  // namespace
 
-bool PartPlacement::mirrored() const { return determinant3(matrix) < 0; }
+bool PartPlacement::mirrored() const { return mirrors(matrix); }
 
 std::size_t InstancedModel::distinctTriangles() const
 {

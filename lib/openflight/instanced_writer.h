@@ -7,7 +7,8 @@
 // or, with clusters, Group Push { LOD near Push {clusters, placements} Pop, LOD proxy* } Pop
 // in place of the list of placements. A proxy drawn by one cluster only is written inside its
 // LOD record; one a cluster and its copies draw is an Instance Definition, referenced from
-// each one's LOD record (under a Group with the copy's Matrix).
+// each one's LOD record (under a Group with the copy's Matrix); a copy seen in a mirror
+// draws the shape's mirrored form, its triangles turned round.
 // A part placed once is written inside its Group. A part placed in a mirror (negative
 // determinant) has a definition of its own, its triangles turned round, so that its faces
 // stay outward. OSG drops a Matrix on an Instance Reference, so it goes on the Group.
@@ -45,7 +46,7 @@ struct PlacementCluster {
     Vec3d center{0, 0, 0};
     // Finest first, contiguous ranges: each one's name, range and centre; no parts. Proxy i
     // draws the model's proxyShapes[shapes[i]] moved by `move`: a cluster that is a copy of
-    // another (moved and turned alike) draws that one's shapes.
+    // another (moved, turned or mirrored alike) draws that one's shapes.
     std::vector<Level> proxies;
     std::vector<std::size_t> shapes;
     Mat4d move{{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}};
@@ -53,6 +54,7 @@ struct PlacementCluster {
     std::vector<std::size_t> placements;  // the placements in it, by index
 
     double nearRange() const { return proxies.empty() ? 0.0 : proxies.front().switchOut; }
+    bool mirrored() const { return mirrors(move); }  // a copy seen in a mirror
 };
 
 struct InstancedModel {

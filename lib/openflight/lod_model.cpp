@@ -54,6 +54,11 @@ bool turns(const Mat4d& m)
     return false;
 }
 
+bool mirrors(const Mat4d& m)
+{
+    return determinant3(m) < 0;
+}
+
 bool isIdentity(const Mat4d& m)
 {
     return !turns(m) && m[0][3] == 0 && m[1][3] == 0 && m[2][3] == 0;

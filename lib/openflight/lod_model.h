@@ -26,6 +26,7 @@ Vec3d transformed(const Mat4d& m, const Vec3d& p);  // the point p placed by m
 Mat4d inverse(const Mat4d& m);                   // an affine placement undone (its 3x3 part invertible)
 double determinant3(const Mat4d& m);             // of the 3x3 part: negative for a mirror
 bool turns(const Mat4d& m);                      // its 3x3 part is not exactly the identity
+bool mirrors(const Mat4d& m);                    // its 3x3 part's determinant is negative
 bool isIdentity(const Mat4d& m);                 // neither turns nor moves
 using cadlod::Rgba;                             // 0..1
 
