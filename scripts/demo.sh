@@ -38,7 +38,7 @@ echo "== OpenSceneGraph reads $FLT (switch ranges in meters)"
 "$BUILD/tests/openflight/osg_assembly_stats" "$FLT" "$name" | sed 's/^/  /'
 "$BUILD/tests/openflight/osg_flt_probe" "$FLT" > "$OUT/osg_probe.txt"
 echo "  the first LOD nodes:"
-grep -E "^lod " "$OUT/osg_probe.txt" | head -8 | sed 's/^/    /'
-echo "  $(grep -c '^name ' "$OUT/osg_probe.txt") named nodes; parts: $(grep '^name ' "$OUT/osg_probe.txt" | sed 's/^name //' | grep -v -e '^lod[0-9]' -e 'LOD child' | sort -u | tr '\n' ' ')"
+grep -m 8 -E "^lod " "$OUT/osg_probe.txt" | sed 's/^/    /'
+echo "  $(grep -c '^name ' "$OUT/osg_probe.txt") named nodes; parts: $(grep '^name ' "$OUT/osg_probe.txt" | sed 's/^name //' | grep -v -E -e '^lod[0-9]' -e 'LOD child' -e ' (chunk|proxy) [0-9]+$' | sort -u | tr '\n' ' ')"
 printf '\ninput  %s (%s bytes)\noutput %s (%s bytes)\ntime   %d ms (load, LOD chain, export)\n' \
   "$INPUT" "$(stat -c %s "$INPUT")" "$FLT" "$(stat -c %s "$FLT")" "$millis"
