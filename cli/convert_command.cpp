@@ -206,6 +206,10 @@ void printAssemblySummary(const AssemblyConversion& c, const flt::InstancedWrite
                  written.placements, c.parts.size(), written.instanceDefinitions, written.bytes);
     std::fprintf(stderr, "cadlod: level 0 draws %zu triangles; %zu distinct triangles written in all levels\n",
                  c.model.placedTriangles(), written.triangles);
+    if (c.stretchedPlacements > 0)
+        std::fprintf(stderr, "cadlod: %zu placements scale their part unevenly: each such part is simplified "
+                             "as stretched as it is seen (its name ends in \"stretched\")\n",
+                     c.stretchedPlacements);
     std::fprintf(stderr, "part                              placements  triangles  levels\n");
     for (const PartChain& p : c.parts)
         std::fprintf(stderr, "%-32.32s  %10zu  %9d  %6zu\n", p.name.c_str(), p.placements, p.triangles,
@@ -247,7 +251,7 @@ nlohmann::json assemblyReportJson(const ConvertArgs& a, const AssemblyConversion
 {
     nlohmann::json input{{"path", a.input}, {"format", "VRML"}, {"parts", c.parts.size()},
                          {"placements", written.placements}, {"faces", c.model.placedTriangles()},
-                         {"mergedVertices", loaded.mergedVertices}};
+                         {"mergedVertices", loaded.mergedVertices}, {"stretchedPlacements", c.stretchedPlacements}};
     input.update(findingsJson(loaded));
     return {
         {"command", "convert"},

@@ -114,6 +114,10 @@ void logConversion(MeshFilterInterface& plugin, const Converted& c, const Cluste
                tree.largeShare > 0 ? ", the largest above" : "", c.hierarchy.proxied, c.hierarchy.proxyLevels,
                c.hierarchy.proxyShapes, c.hierarchy.proxyTriangles, c.hierarchy.inputTriangles, c.hierarchy.copied, c.hierarchy.turned,
                c.hierarchy.mirrored);
+    if (c.conversion.stretchedPlacements > 0)
+        plugin.Log("CAD LOD set, per part and cluster: %zu placements scale their part unevenly; each such part is "
+                   "simplified as stretched as it is seen",
+                   c.conversion.stretchedPlacements);
     plugin.Log("CAD LOD set, per part and cluster: wrote %s: %zu bytes, %zu triangles in %.2f s (the document is "
                "unchanged: a layer cannot hold instances)",
                qUtf8Printable(output), written.bytes, written.triangles, seconds);

@@ -3,6 +3,7 @@
 #include "assembly/parallel_tasks.h"
 
 #include "assembly/part_chunks.h"
+#include "assembly/stretched_placements.h"
 
 #include "lod/cluster_tree.h"  // Box3
 #include "lod/lod_chain.h"
@@ -150,11 +151,13 @@ AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelN
                                    const BuildChain& buildChain, bool chunkLargeParts, const ProgressSpans& progress)
 {
     // What no shared node holds is placed under the input file's name.
-    const std::vector<vrml::Placement> placements =
+    std::vector<vrml::Placement> placements =
         vrml::flattenPlacements(scene.assembly, scene.assembly.empty() ? modelName : scene.assembly.geometries[0].name);
+    const std::size_t stretchedPlacements = buildStretchesIn(scene.assembly, placements);
     std::map<std::size_t, std::size_t> definitionOf;
     const std::vector<std::size_t> geometries = placedGeometries(placements, definitionOf);
     AssemblyConversion out;
+    out.stretchedPlacements = stretchedPlacements;
     out.model.name = modelName;
     out.model.definitions.resize(geometries.size());
     const double chunkedRadius = chunkLargeParts ? kChunkedPartShare * placedBox(scene.assembly, placements).halfDiagonal()

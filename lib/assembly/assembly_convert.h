@@ -35,6 +35,7 @@ struct AssemblyConversion {
     flt::InstancedModel model;
     std::vector<PartChain> parts;  // one per definition of the model
     std::size_t skippedFaces = 0;  // degenerate faces the level conversion dropped
+    std::size_t stretchedPlacements = 0;  // given stretched parts (stretched_placements.h)
 };
 
 // `modelName` names the model (its header and root group). `chunkLargeParts`: a part large

@@ -5,6 +5,7 @@
 #include "cli_runner.h"
 #include "osg_assembly_probe.h"
 
+#include "assembly/stretched_placements.h"
 #include "lod/nearest_point.h"
 #include "vrml/importer.h"
 
@@ -170,6 +171,72 @@ TEST(CliAssembly, InstancesExpandedWriteOneChainWithoutInstanceRecords)
     ASSERT_TRUE(osg.loaded);
     EXPECT_EQ(osg.finestTriangles.size(), expandedTriangles(importAt(input, vrml::Instances::Expand)).size());
     EXPECT_EQ(osg.sharedNodes, 0u);
+}
+
+// Placements that scale their part unevenly (along its axes, or sheared by a turn inside an
+// uneven scale) get parts with the stretch built in: every triangle stays where it was, each
+// matrix left is a turn or a mirror and a move, and placements stretched alike share a part.
+TEST(CliAssembly, StretchedPlacementsKeepEveryTriangleWhereItWas)
+{
+    const std::string dir = freshDirectory("assembly_stretched");
+    write(dir + "/knob.wrl", "#VRML V2.0 utf8\nShape { geometry Sphere { radius 2 } }\n"
+                             "Transform { translation 0 0 2 children Shape { geometry Cylinder { radius 0.5 height 3 } } }\n");
+    write(dir + "/asm.wrl", "#VRML V2.0 utf8\n"
+                            "DEF A Transform { translation 10 0 0 children Inline { url \"knob.wrl\" } }\n"
+                            "DEF B Transform { translation 20 0 0 scale 1 1 3 children Inline { url \"knob.wrl\" } }\n"
+                            "DEF C Transform { translation 30 0 0 rotation 0 1 0 0.4 scale 1 1 3 children Inline { url \"knob.wrl\" } }\n"
+                            "DEF D Transform { translation 40 0 0 scale -1 1 3 children Inline { url \"knob.wrl\" } }\n"
+                            "DEF E Transform { scale 1 2 1 children Transform { translation 50 0 0 rotation 0 0 1 0.7 "
+                            "children Inline { url \"knob.wrl\" } } }\n"
+                            "DEF F Transform { translation 60 0 0 scale 2 2 2 children Inline { url \"knob.wrl\" } }\n");
+    vrml::Scene scene = importAt(dir + "/asm.wrl", vrml::Instances::Keep);
+    std::vector<vrml::Placement> placements = vrml::flattenPlacements(scene.assembly, "asm");
+    ASSERT_EQ(placements.size(), 6u);
+    const auto worldTriangles = [&](const std::vector<vrml::Placement>& all) {
+        std::vector<std::array<std::array<double, 3>, 3>> out;
+        for (const vrml::Placement& p : all)
+            for (const vrml::Part& part : scene.assembly.geometries[p.geometry].parts)
+                for (std::size_t t = 0; t < part.triangleCount(); ++t) {
+                    std::array<std::array<double, 3>, 3> tri{};
+                    for (int k = 0; k < 3; ++k) {
+                        const auto& v = part.positions[part.triangles[3 * t + k]];
+                        const vrml::Vec3 w = p.matrix.transformPoint({v[0], v[1], v[2]});
+                        tri[k] = {w.x, w.y, w.z};
+                    }
+                    out.push_back(tri);
+                }
+        return out;
+    };
+    const auto before = worldTriangles(placements);
+    const std::size_t knob = placements[0].geometry;
+
+    EXPECT_EQ(buildStretchesIn(scene.assembly, placements), 4u);  // B, C turned after, D mirrored, E sheared
+    const auto after = worldTriangles(placements);
+    ASSERT_EQ(after.size(), before.size());
+    double moved = 0;
+    for (std::size_t t = 0; t < before.size(); ++t)
+        for (int k = 0; k < 3; ++k)
+            for (int c = 0; c < 3; ++c)
+                moved = std::max(moved, std::abs(after[t][k][c] - before[t][k][c]));
+    EXPECT_LT(moved, 1e-5);  // the float positions' rounding, in millimetres of a 60 mm model
+
+    EXPECT_EQ(placements[0].geometry, knob);  // plain
+    EXPECT_EQ(placements[5].geometry, knob);  // scaled evenly
+    EXPECT_NE(placements[1].geometry, knob);
+    EXPECT_EQ(placements[1].geometry, placements[2].geometry);  // stretched alike, then turned
+    EXPECT_EQ(placements[1].geometry, placements[3].geometry);  // stretched alike, then mirrored
+    EXPECT_NE(placements[4].geometry, knob);
+    EXPECT_NE(placements[4].geometry, placements[1].geometry);
+    EXPECT_TRUE(placements[3].mirrored());
+    for (std::size_t i = 1; i < 5; ++i)
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) {
+                double dot = 0;  // the matrix times its transpose: the identity for a turn or a mirror
+                for (int k = 0; k < 3; ++k)
+                    dot += placements[i].matrix.m[r][k] * placements[i].matrix.m[c][k];
+                EXPECT_NEAR(dot, r == c ? 1.0 : 0.0, 1e-9) << placements[i].path;
+            }
+    EXPECT_EQ(scene.assembly.geometries[placements[1].geometry].name, "knob stretched");
 }
 
 TEST(CliAssembly, TooManyPlacementsFailWithoutOutput)

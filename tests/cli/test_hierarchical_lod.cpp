@@ -136,6 +136,22 @@ std::string writeUnsharedGrid(const std::string& dir)
     return path;
 }
 
+// Knobs on a 4 x 4 grid, DEF'd once and USE'd, placed plain, stretched three times along z
+// (a knob drawn tall) or along x, in turn.
+std::string writeStretchedKnobs(const std::string& dir)
+{
+    const char* scales[] = {"1 1 1", "1 1 3", "3 1 1"};
+    std::ostringstream text;
+    text << "#VRML V2.0 utf8\n";
+    for (int n = 0; n < 16; ++n)
+        text << "DEF P" << n << " Transform { translation " << 0.12 * (n % 4) << ' ' << 0.12 * (n / 4)
+             << " 0 scale " << scales[n % 3] << " children " << (n == 0 ? knobDefinition("0 0") : "USE KNOB")
+             << " }\n";
+    const std::string path = dir + "/stretched.wrl";
+    std::ofstream(path) << text.str();
+    return path;
+}
+
 std::vector<Point3> eyePoints(const std::array<Point3, 2>& box)
 {
     const Point3 &lo = box[0], &hi = box[1];
@@ -309,6 +325,31 @@ TEST(CliHierarchicalLod, AFileThatSharesNothingIsClusteredByItsParts)
     const nlohmann::json one = nlohmann::json::parse(readFile(dir + "/one.json"));
     EXPECT_FALSE(one.contains("parts"));
     EXPECT_EQ(one.at("output").at("lodNodes"), one.at("levels").size());  // one chain: a record per level
+}
+
+// A part placed stretched shows its levels' errors stretched: it is simplified stretched, a
+// part of its own per stretch, so that the bound holds where it stands, clustered or not.
+TEST(CliHierarchicalLod, AStretchedPlacementHoldsTheBoundAsItIsSeen)
+{
+    const std::string dir = freshDirectory("hlod_stretched");
+    const std::string input = writeStretchedKnobs(dir);
+    for (const char* mode : {"auto", "off"}) {
+        const std::string out = dir + "/" + mode;
+        const CliRun run = runCadlod({"convert", input, "-o", out + ".flt", "--hlod", mode, "--cluster-parts", "4",
+                                      "--report", out + ".json"});
+        ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+        EXPECT_NE(run.stderrText.find("10 placements scale their part unevenly"), std::string::npos) << run.stderrText;
+        const nlohmann::json report = nlohmann::json::parse(readFile(out + ".json"));
+        EXPECT_EQ(report.at("input").at("stretchedPlacements"), 10);
+        EXPECT_EQ(report.at("input").at("parts"), 3);  // the knob, tall and wide
+        const OsgViewProbe osg(out + ".flt", mode);
+        ASSERT_TRUE(osg.loaded());
+        for (const Point3& eye : eyePoints(osg.bounds())) {
+            const OsgView view = osg.drawFrom(eye);
+            EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9)) << mode;
+            EXPECT_EQ(view.drawnPlacements.size(), 16u) << mode;
+        }
+    }
 }
 
 // The parts' chains and the clusters' proxies run at once on several threads; what they make
