@@ -361,14 +361,21 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     const double writeSeconds = secondsSince(t2);
     progress::done();
     const LoadedMesh imported = assemblyImport(loaded, c);
+    const std::string placementWarning = flt::placementPrecisionWarning(c.model, a.exporting.units);
     if (!a.report.empty())
         outputs.write(a.report, [&](const std::string& temporary) {
             nlohmann::json report = assemblyReportJson(a, c, written, imported, importSeconds, lodSeconds,
                                                        writeSeconds, secondsSince(t0));
             report["hlod"] = hierarchyJson(a, hierarchy);
+            if (!placementWarning.empty()) {
+                report["warnings"].push_back(placementWarning);
+                report["warningCount"] = report["warningCount"].get<std::size_t>() + 1;
+            }
             return writeJsonTo(temporary, report);
         });
     outputs.commit();
+    if (!placementWarning.empty())
+        printFolded("warning", {placementWarning});
     if (!a.common.quiet) {
         printAssemblySummary(c, written, a.output);
         printHierarchySummary(a, hierarchy);

@@ -118,6 +118,9 @@ void logConversion(MeshFilterInterface& plugin, const Converted& c, const Cluste
         plugin.Log("CAD LOD set, per part and cluster: %zu placements scale their part unevenly; each such part is "
                    "simplified as stretched as it is seen",
                    c.conversion.stretchedPlacements);
+    const std::string placementWarning = flt::placementPrecisionWarning(c.conversion.model, "model units");
+    if (!placementWarning.empty())
+        plugin.Log("CAD LOD set, per part and cluster: warning: %s", placementWarning.c_str());
     plugin.Log("CAD LOD set, per part and cluster: wrote %s: %zu bytes, %zu triangles in %.2f s (the document is "
                "unchanged: a layer cannot hold instances)",
                qUtf8Printable(output), written.bytes, written.triangles, seconds);

@@ -3,6 +3,9 @@
 #include "openflight/level_writer.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
 #include <functional>
 #include <map>
 #include <utility>
@@ -282,6 +285,43 @@ std::size_t InstancedModel::placedTriangles() const
     for (const PartPlacement& p : placements)
         n += finestTriangles(definitions.at(p.definition));
     return n;
+}
+
+PlacementPrecision placementPrecision(const InstancedModel& model)
+{
+    PlacementPrecision out;
+    Vec3d lo{0, 0, 0}, hi{0, 0, 0};
+    double& farthest = out.farthest;
+    for (std::size_t i = 0; i < model.placements.size(); ++i) {
+        const PartPlacement& p = model.placements[i];
+        const Vec3d centre = transformed(p.matrix, model.definitions.at(p.definition).levels.front().center);
+        for (int k = 0; k < 3; ++k) {
+            const double at = centre[k];
+            lo[k] = i == 0 ? at : std::min(lo[k], at);
+            hi[k] = i == 0 ? at : std::max(hi[k], at);
+            farthest = std::max(farthest, std::abs(at));
+        }
+    }
+    if (farthest > 0)
+        out.spacing = std::ldexp(1.0, std::ilogb(farthest) - (std::numeric_limits<float>::digits - 1));
+    for (int k = 0; k < 3; ++k)
+        out.extent = std::max(out.extent, hi[k] - lo[k]);
+    return out;
+}
+
+std::string placementPrecisionWarning(const InstancedModel& model, const std::string& unitName)
+{
+    const PlacementPrecision p = placementPrecision(model);
+    if (p.spacing <= kVisiblePlacementSpacing * p.extent)
+        return {};
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "the parts are placed up to %.6g %s from the origin, where the 32-bit numbers of OpenFlight's "
+                  "Matrix records (and of OpenSceneGraph) are %.3g %s apart: parts may stand up to half that off "
+                  "where they belong; export the model nearer the origin",
+                  p.farthest, unitName.c_str(), p.spacing,
+                  unitName.c_str());
+    return text;
 }
 
 std::size_t InstancedModel::proxyTriangles() const

@@ -80,6 +80,27 @@ struct InstancedWriteStats : WriteStats {
     std::size_t proxyLevels = 0;
 };
 
+// A Matrix record holds 32-bit floats, and so does a reader that builds its scene from them:
+// a placement far from the origin stands only to within their spacing there. Each placement
+// counts where its finest level's centre is placed. `spacing`: that spacing at the placement
+// farthest from the origin; `extent`: how far apart the placements stand (the largest side of
+// the box of their centres); `farthest`: how far the farthest one stands from the origin along
+// an axis. All in the model's unit.
+struct PlacementPrecision {
+    double farthest = 0;
+    double spacing = 0;
+    double extent = 0;
+};
+PlacementPrecision placementPrecision(const InstancedModel& model);
+
+// Where placements stand off by more than this share of how far apart they are, a viewer
+// sees it (gaps between parts that touch): the file is worth a warning.
+inline constexpr double kVisiblePlacementSpacing = 1e-5;
+
+// The warning a model whose placements stand visibly off deserves, its lengths given in
+// `unitName`; empty when they stand where they should.
+std::string placementPrecisionWarning(const InstancedModel& model, const std::string& unitName);
+
 // Mesh records only (Face records share one Vertex Palette, which instances cannot).
 bool writeInstancedOpenFlight(const InstancedModel& model, const WriteOptions& options, std::vector<std::uint8_t>& out,
                               std::string& error, InstancedWriteStats* stats = nullptr);

@@ -239,6 +239,25 @@ TEST(CliAssembly, StretchedPlacementsKeepEveryTriangleWhereItWas)
     EXPECT_EQ(scene.assembly.geometries[placements[1].geometry].name, "knob stretched");
 }
 
+// A model placed thousands of kilometres from the origin (site coordinates) cannot be placed
+// to the millimetre by 32-bit Matrix records: the conversion says so, on the terminal and in
+// the report, and says nothing for the same model at the origin.
+TEST(CliAssembly, PlacementsFarFromTheOriginAreWarnedOf)
+{
+    const std::string dir = freshDirectory("assembly_far");
+    const std::string input = writeAssembly(dir);
+    write(dir + "/site.wrl", "#VRML V2.0 utf8\nTransform { translation 5e9 2e9 0 children Inline { url \"asm.wrl\" } }\n");
+    for (const std::string name : {"asm", "site"}) {
+        const CliRun run = runCadlod({"convert", dir + "/" + name + ".wrl", "-o", dir + "/" + name + ".flt", "--unit",
+                                      "mm", "-q", "--report", dir + "/" + name + ".json"});
+        ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+        const nlohmann::json warnings = nlohmann::json::parse(readFile(dir + "/" + name + ".json")).at("warnings");
+        const bool far = name == "site";
+        EXPECT_EQ(run.stderrText.find("0.5 meters apart") != std::string::npos, far) << run.stderrText;
+        EXPECT_EQ(warnings.dump().find("from the origin") != std::string::npos, far) << warnings.dump();
+    }
+}
+
 TEST(CliAssembly, TooManyPlacementsFailWithoutOutput)
 {
     const std::string dir = freshDirectory("assembly_bomb");
