@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Hierarchical LOD side by side (docs/benchmarks.md, "Hierarchical LOD"):
 #   bench/assemblies/hlod.sh BUILD_DIR WORK_DIR [ASSEMBLY...]   (default: demo cabinet_q cabinet plant hall yard yard_close line)
-# For each assembly (the bundled demo, or one made by make_assemblies.py into WORK_DIR), in one
+# For each assembly (the bundled demo, or one made by make_assemblies.py or, for unique scaled
+# pipes vrml1 creo tower geo, make_other_assemblies.py into WORK_DIR), in one
 # run: --hlod auto (the default), --hlod off (a node per placement), --hlod calls (the fewest
-# draw calls; not on the plant, the hall or the yards, whose merged files would be several GB) and, for the demo and
+# draw calls; not on the plant, the hall, the yards or make_other_assemblies.py's, whose merged files would be several GB) and, for the demo and
 # cabinet_q, --instances expand (one node for the whole model: the chain of the per-cluster
 # estimate). Prints build time and peak memory, then bench/view_error's worst error on
 # screen, triangles, drawables and, where the expanded chain exists, the ratio to the
@@ -14,14 +15,19 @@ HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ASSEMBLIES=("$@"); [ $# -gt 0 ] || ASSEMBLIES=(demo cabinet_q cabinet plant hall yard yard_close line)
 CADLOD="$BUILD/cli/cadlod"; VIEW="$BUILD/bench/view_error/view_error"
 mkdir -p "$WORK/hlod"; WORK="$(cd "$WORK" && pwd)"
-[ -f "$WORK/yard_close/yard_close.wrl" ] || python3 "$HERE/make_assemblies.py" "$WORK" >/dev/null
+OTHER=" unique scaled pipes vrml1 creo tower geo "  # make_other_assemblies.py's
+for a in "${ASSEMBLIES[@]}"; do
+  [ "$a" = demo ] || [ -f "$WORK/$a/$a.wrl" ] && continue
+  case "$OTHER" in *" $a "*) python3 "$HERE/make_other_assemblies.py" "$WORK" >/dev/null ;;
+                   *) python3 "$HERE/make_assemblies.py" "$WORK" >/dev/null ;; esac
+done
 
 input_of() { [ "$1" = demo ] && echo "$HERE/../../docs/sample/cad_assembly.wrl.gz" || echo "$WORK/$1/$1.wrl"; }
 unit_of() { [ "$1" = demo ] && echo mm || echo 0.1in; }
 
 printf "%-10s %-7s %8s %8s\n" assembly run seconds peak_MB
 for a in "${ASSEMBLIES[@]}"; do
-  runs=(auto off); case "$a" in plant|hall|yard|yard_close) ;; *) runs+=(calls) ;; esac
+  runs=(auto off); case "$a" in plant|hall|yard|yard_close) ;; *) [[ "$OTHER" == *" $a "* ]] || runs+=(calls) ;; esac
   { [ "$a" = demo ] || [ "$a" = cabinet_q ]; } && runs+=(expand)
   for r in "${runs[@]}"; do
     out="$WORK/hlod/$a.$r"
