@@ -17,14 +17,6 @@ namespace {
 
 using flt::Vec3d;
 
-double largestScale(const flt::Mat4d& m)
-{
-    double s = 0;
-    for (int c = 0; c < 3; ++c)
-        s = std::max(s, std::sqrt(m[0][c] * m[0][c] + m[1][c] * m[1][c] + m[2][c] * m[2][c]));
-    return s;
-}
-
 // The box, in the model, of a part's finest level where a placement puts it.
 Box3 placedBox(const flt::Level& level, const flt::Mat4d& m)
 {
@@ -385,7 +377,7 @@ private:
     std::size_t levelIndexAt(const flt::PartPlacement& p, double d) const
     {
         const std::vector<flt::Level>& levels = c_.model.definitions[p.definition].levels;
-        const double local = d / std::max(largestScale(p.matrix), 1e-300);
+        const double local = d / std::max(flt::largestScale(p.matrix), 1e-300);
         for (std::size_t k = 0; k < levels.size(); ++k)
             if (levels[k].switchOut <= local && local < levels[k].switchIn)
                 return k;
@@ -415,7 +407,7 @@ private:
     {
         const std::vector<flt::Level>& levels = c_.model.definitions[p.definition].levels;
         const std::vector<LodLevel>& measured = c_.parts[p.definition].result.levels;
-        const double scale = largestScale(p.matrix);
+        const double scale = flt::largestScale(p.matrix);
         std::size_t best = 0;
         for (std::size_t k = 1; k < levels.size() && k < measured.size(); ++k)
             if (scale * measured[k].hausdorffMax <= allowance)
@@ -430,7 +422,7 @@ private:
         sink.add(c_.model.definitions[p.definition].levels[k], p.matrix, p.mirrored());
         const std::vector<LodLevel>& measured = c_.parts[p.definition].result.levels;
         if (k < measured.size())
-            error = std::max(error, largestScale(p.matrix) * measured[k].hausdorffMax);
+            error = std::max(error, flt::largestScale(p.matrix) * measured[k].hausdorffMax);
     }
 
     void simplifyTogether(MergedParts& merged, double inputError, const ProxyRange& range, ClusterWork& work,

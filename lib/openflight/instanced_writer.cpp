@@ -294,12 +294,13 @@ PlacementPrecision placementPrecision(const InstancedModel& model)
     double& farthest = out.farthest;
     for (std::size_t i = 0; i < model.placements.size(); ++i) {
         const PartPlacement& p = model.placements[i];
-        const Vec3d centre = transformed(p.matrix, model.definitions.at(p.definition).levels.front().center);
+        const Level& finest = model.definitions.at(p.definition).levels.front();
+        const Vec3d centre = transformed(p.matrix, finest.center);
+        const double reach = largestScale(p.matrix) * finest.reachFrom(finest.center);
         for (int k = 0; k < 3; ++k) {
-            const double at = centre[k];
-            lo[k] = i == 0 ? at : std::min(lo[k], at);
-            hi[k] = i == 0 ? at : std::max(hi[k], at);
-            farthest = std::max(farthest, std::abs(at));
+            lo[k] = i == 0 ? centre[k] - reach : std::min(lo[k], centre[k] - reach);
+            hi[k] = i == 0 ? centre[k] + reach : std::max(hi[k], centre[k] + reach);
+            farthest = std::max(farthest, std::abs(centre[k]));
         }
     }
     if (farthest > 0)

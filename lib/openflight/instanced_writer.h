@@ -83,9 +83,9 @@ struct InstancedWriteStats : WriteStats {
 // A Matrix record holds 32-bit floats, and so does a reader that builds its scene from them:
 // a placement far from the origin stands only to within their spacing there. Each placement
 // counts where its finest level's centre is placed. `spacing`: that spacing at the placement
-// farthest from the origin; `extent`: how far apart the placements stand (the largest side of
-// the box of their centres); `farthest`: how far the farthest one stands from the origin along
-// an axis. All in the model's unit.
+// farthest from the origin; `extent`: the largest side of the box of the placed parts (each
+// a sphere about its centre); `farthest`: how far the farthest centre stands from the origin
+// along an axis. All in the model's unit.
 struct PlacementPrecision {
     double farthest = 0;
     double spacing = 0;

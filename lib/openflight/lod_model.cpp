@@ -59,6 +59,14 @@ bool mirrors(const Mat4d& m)
     return determinant3(m) < 0;
 }
 
+double largestScale(const Mat4d& m)
+{
+    double s = 0;
+    for (int c = 0; c < 3; ++c)
+        s = std::max(s, std::sqrt(m[0][c] * m[0][c] + m[1][c] * m[1][c] + m[2][c] * m[2][c]));
+    return s;
+}
+
 bool isIdentity(const Mat4d& m)
 {
     return !turns(m) && m[0][3] == 0 && m[1][3] == 0 && m[2][3] == 0;

@@ -27,6 +27,7 @@ Mat4d inverse(const Mat4d& m);                   // an affine placement undone (
 double determinant3(const Mat4d& m);             // of the 3x3 part: negative for a mirror
 bool turns(const Mat4d& m);                      // its 3x3 part is not exactly the identity
 bool mirrors(const Mat4d& m);                    // its 3x3 part's determinant is negative
+double largestScale(const Mat4d& m);             // the longest of its 3x3 part's columns
 bool isIdentity(const Mat4d& m);                 // neither turns nor moves
 using cadlod::Rgba;                             // 0..1
 
