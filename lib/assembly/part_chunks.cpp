@@ -128,7 +128,7 @@ std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& 
         for (const auto& entry : split.back())
             cells[entry.first] = true;
     }
-    if (split.front().size() < 2)
+    if (split.front().size() < 2 || levels.front().triangleCount() < kLeastChunkTriangles * split.front().size())
         return {};
     std::vector<std::vector<flt::Level>> chunks;
     for (const auto& entry : cells) {

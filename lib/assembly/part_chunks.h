@@ -11,6 +11,7 @@
 
 #include "openflight/lod_model.h"
 
+#include <cstddef>
 #include <vector>
 
 namespace cadlod {
@@ -20,10 +21,15 @@ inline constexpr int kChunksPerAxis = 4;
 // A part is cut when its radius is at least this share of the assembly's: smaller parts
 // are as small as the chunks would be, and chunks of them would only add draw calls.
 inline constexpr double kChunkedPartShare = 1.0 / 16.0;
+// A part is cut only where its finest level gives its chunks at least this many triangles
+// each, on average: every chunk is a draw call of its own, and a board of a dozen triangles
+// cut into ten would draw ten calls for what one draws.
+inline constexpr std::size_t kLeastChunkTriangles = 64;
 
 // `levels`: the part's chain, finest first, each switched in where its error projects to the
 // pixel error at the centre (not yet held at the nearest point). Empty when chunks would not
-// let any level switch nearer, or the part's radius is below `smallestRadius`.
+// let any level switch nearer, the part's radius is below `smallestRadius`, or its chunks
+// would hold fewer than kLeastChunkTriangles each.
 std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius);
 
 }  // namespace cadlod

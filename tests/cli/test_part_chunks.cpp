@@ -37,7 +37,7 @@ flt::Level strip(int cells, double switchOut, double switchIn)
 
 TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
 {
-    const std::vector<flt::Level> levels{strip(64, 0, 1.0), strip(16, 1.0, 4.0), strip(4, 4.0, 1e30)};
+    const std::vector<flt::Level> levels{strip(256, 0, 1.0), strip(16, 1.0, 4.0), strip(4, 4.0, 1e30)};
     const auto chunks = chunkLevels(levels, 0.0);
     ASSERT_EQ(chunks.size(), 4u);  // four along x; the strip is flat in y and z
     for (std::size_t k = 0; k < levels.size(); ++k) {
@@ -56,6 +56,12 @@ TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
         EXPECT_LT(chunk[1].switchOut, switchAtNearestPoint(1.0, wholeReach) / 2);
     }
     EXPECT_TRUE(chunkLevels(levels, 1.0).empty());  // smaller than the smallest part cut
+
+    // 128 triangles would give each of the four chunks 32, fewer than kLeastChunkTriangles:
+    // four draw calls where one draws it all.
+    const std::vector<flt::Level> few{strip(64, 0, 1.0), strip(16, 1.0, 4.0), strip(4, 4.0, 1e30)};
+    EXPECT_LT(few.front().triangleCount(), 4 * kLeastChunkTriangles);
+    EXPECT_TRUE(chunkLevels(few, 0.0).empty());
 }
 
 }  // namespace cadlod::test
