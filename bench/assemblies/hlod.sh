@@ -2,7 +2,7 @@
 # Hierarchical LOD side by side (docs/benchmarks.md, "Hierarchical LOD"):
 #   bench/assemblies/hlod.sh BUILD_DIR WORK_DIR [ASSEMBLY...]   (default: demo cabinet_q cabinet plant hall yard yard_close line)
 # For each assembly (the bundled demo, or one made by make_assemblies.py or, for unique scaled
-# pipes vrml1 creo tower geo, make_other_assemblies.py into WORK_DIR), in one
+# pipes vrml1 creo tower geo inline_once, make_other_assemblies.py into WORK_DIR), in one
 # run: --hlod auto (the default), --hlod off (a node per placement), --hlod calls (the fewest
 # draw calls; not on the plant, the hall, the yards or make_other_assemblies.py's, whose merged files would be several GB) and, for the demo and
 # cabinet_q, --instances expand (one node for the whole model: the chain of the per-cluster
@@ -15,7 +15,7 @@ HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ASSEMBLIES=("$@"); [ $# -gt 0 ] || ASSEMBLIES=(demo cabinet_q cabinet plant hall yard yard_close line)
 CADLOD="$BUILD/cli/cadlod"; VIEW="$BUILD/bench/view_error/view_error"
 mkdir -p "$WORK/hlod"; WORK="$(cd "$WORK" && pwd)"
-OTHER=" unique scaled pipes vrml1 creo tower geo "  # make_other_assemblies.py's
+OTHER=" unique inline_once scaled pipes vrml1 creo tower geo "  # make_other_assemblies.py's
 for a in "${ASSEMBLIES[@]}"; do
   [ "$a" = demo ] || [ -f "$WORK/$a/$a.wrl" ] && continue
   case "$OTHER" in *" $a "*) python3 "$HERE/make_other_assemblies.py" "$WORK" >/dev/null ;;

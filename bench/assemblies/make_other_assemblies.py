@@ -5,6 +5,7 @@ on assemblies it has not seen (docs/benchmarks.md, "Assemblies of other kinds"):
   make_other_assemblies.py OUTDIR
 
   unique   300 distinct KiCad parts, each placed once, on 6 boards over a plate: no instances
+  inline_once  `unique` with no DEF names, as Creo and SolidWorks place each part file by Inline
   scaled   a module of 36 parts, some scaled unevenly (1 1 3, 2 1 1) or evenly (1.5), USE'd 24
            times, some modules at twice the size, some mirrored
   pipes    16 pipes 20 m long and 6 tanks, as plain shapes, beside 120 valve groups USE'd
@@ -17,6 +18,7 @@ Units are KiCad's (0.1 inch): convert with --unit 0.1in. Deterministic.
 """
 import os
 import random
+import re
 import shutil
 import sys
 
@@ -55,6 +57,11 @@ def write_unique(out):
     text.append("Transform { translation 1400 0 -200 children Shape { %s geometry Box { size 3400 600 20 } } }"
                 % material("0.5 0.5 0.5"))
     save(folder, "unique", text)
+    once = os.path.join(out, "inline_once")
+    os.makedirs(once, exist_ok=True)
+    if not os.path.exists(os.path.join(once, "parts")):
+        os.symlink(os.path.join(os.path.abspath(folder), "parts"), os.path.join(once, "parts"))
+    save(once, "inline_once", [re.sub(r"DEF \w+ ", "", line) for line in text])
 
 
 def write_scaled(out):
@@ -147,7 +154,7 @@ def main():
         sys.exit(__doc__)
     for write in (write_unique, write_scaled, write_pipes, write_vrml1, write_creo, write_tower):
         write(sys.argv[1])
-    print("unique scaled pipes vrml1 creo tower geo written to %s" % sys.argv[1])
+    print("unique inline_once scaled pipes vrml1 creo tower geo written to %s" % sys.argv[1])
 
 
 if __name__ == "__main__":

@@ -377,7 +377,9 @@ private:
                                    [&] { read(ctx_.frame, Owner{}); });
             else {
                 ctx_.noteExpandedUse("file " + key);
-                read(world, owner);
+                // A file placed by Inline is a part the CAD system named by its file (Creo and
+                // SolidWorks place every part so), unless a DEF'd node above names it already.
+                read(world, owner.named ? owner : ctx_.newOwner(fs::path(path).stem().string(), true));
             }
             return;
         }
