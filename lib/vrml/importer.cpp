@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <memory>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace cadlod::vrml {
 
@@ -377,15 +378,30 @@ private:
                                    [&] { read(ctx_.frame, Owner{}); });
             else {
                 ctx_.noteExpandedUse("file " + key);
-                // A file placed by Inline is a part the CAD system named by its file (Creo and
-                // SolidWorks place every part so), unless a DEF'd node above names it already.
-                read(world, owner.named ? owner : ctx_.newOwner(fs::path(path).stem().string(), true));
+                const Owner part = inlineOwner(owner, fs::path(path).stem().string());
+                readingOwners_.push_back(part.id);
+                read(world, part);
+                readingOwners_.pop_back();
             }
             return;
         }
         std::string list;
         for (const std::string& u : urls) list += (list.empty() ? "" : ", ") + u;
         diag.warn("missing inline", where, "Inline file not found: " + (list.empty() ? "(no url)" : list));
+    }
+
+    // A file placed by Inline is a part the CAD system named (Creo and SolidWorks place every
+    // part so): the part of the DEF'd node right above it, as `DEF U1 Transform { children
+    // Inline {...} }` names it, else one named by its file. A DEF'd node that places several
+    // files (an assembly's root) names the first; each further one is a part of its own. A file
+    // that a part's own file places is of that part.
+    Owner inlineOwner(const Owner& owner, const std::string& fileStem)
+    {
+        if (!owner.named) return ctx_.newOwner(fileStem, true);
+        const bool insideItsFile =
+            std::find(readingOwners_.begin(), readingOwners_.end(), owner.id) != readingOwners_.end();
+        if (insideItsFile || ownersOfInlines_.insert(owner.id).second) return owner;
+        return ctx_.newOwner(owner.name + "/" + fileStem, true);
     }
 
     std::shared_ptr<ProtoDecl> resolveExternProto(const std::string& baseDir, const std::string& rawUrl,
@@ -409,6 +425,8 @@ private:
     std::vector<std::string> openFiles_;
     std::unordered_map<std::string, std::shared_ptr<LoadedFile>> cache_;
     int externDepth_ = 0;
+    std::unordered_set<int> ownersOfInlines_;  // the DEF'd nodes that placed a file (inlineOwner)
+    std::vector<int> readingOwners_;           // the parts whose files are being read
 };
 
 }  // namespace

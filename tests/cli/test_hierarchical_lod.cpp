@@ -352,14 +352,14 @@ TEST(CliHierarchicalLod, AStretchedPlacementHoldsTheBoundAsItIsSeen)
     }
 }
 
-// Creo and SolidWorks write a file per part and place each by Inline, no DEF naming it: with
-// every part placed once, the file shares nothing, and each Inline file is a part placed once,
-// named by its file, in clusters with proxies as named parts are.
+// Creo and SolidWorks write a file per part and place each by Inline, no DEF naming it, or all
+// of them under one DEF'd root: with every part placed once, the file shares nothing, and each
+// Inline file is a part placed once (named by its file, or after the root and its file), in
+// clusters with proxies as named parts are.
 TEST(CliHierarchicalLod, PartsPlacedOnceByInlineAreClusteredByTheirFiles)
 {
     const std::string dir = freshDirectory("hlod_inline_once");
     std::ostringstream text;
-    text << "#VRML V2.0 utf8\n";
     for (int n = 0; n < 16; ++n) {
         std::ofstream(dir + "/part" + std::to_string(n) + ".wrl")
             << "#VRML V2.0 utf8\nShape { geometry Sphere { radius 0.012 } }\n"
@@ -368,22 +368,26 @@ TEST(CliHierarchicalLod, PartsPlacedOnceByInlineAreClusteredByTheirFiles)
         text << "Transform { translation " << 0.08 * (n % 4) << ' ' << 0.08 * (n / 4)
              << " 0 children Inline { url \"part" << n << ".wrl\" } }\n";
     }
-    std::ofstream(dir + "/assembly.wrl") << text.str();
-    const CliRun run = runCadlod({"convert", dir + "/assembly.wrl", "-o", dir + "/assembly.flt", "--cluster-parts", "4",
-                                  "--report", dir + "/assembly.json"});
-    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
-    const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/assembly.json"));
-    ASSERT_TRUE(report.contains("parts")) << "converted as one node";
-    EXPECT_EQ(report.at("parts").size(), 16u);
-    EXPECT_EQ(report.at("parts").front().at("name"), "part0");
-    EXPECT_GE(report.at("hlod").at("clusters").get<int>(), 4);
+    std::ofstream(dir + "/assembly.wrl") << "#VRML V2.0 utf8\n" << text.str();
+    std::ofstream(dir + "/rooted.wrl") << "#VRML V2.0 utf8\nDEF ASSEMBLY Transform { children [\n"
+                                       << text.str() << "] }\n";
+    for (const std::string name : {"assembly", "rooted"}) {
+        const CliRun run = runCadlod({"convert", dir + "/" + name + ".wrl", "-o", dir + "/" + name + ".flt",
+                                      "--cluster-parts", "4", "--report", dir + "/" + name + ".json"});
+        ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+        const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/" + name + ".json"));
+        ASSERT_TRUE(report.contains("parts")) << name << " converted as one node";
+        EXPECT_EQ(report.at("parts").size(), 16u) << name;
+        EXPECT_EQ(report.at("parts").at(1).at("name"), name == "rooted" ? "ASSEMBLY/part1" : "part1");
+        EXPECT_GE(report.at("hlod").at("clusters").get<int>(), 4) << name;
 
-    const OsgViewProbe osg(dir + "/assembly.flt", "assembly");
-    ASSERT_TRUE(osg.loaded());
-    for (const Point3& eye : eyePoints(osg.bounds())) {
-        const OsgView view = osg.drawFrom(eye);
-        EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9));
-        EXPECT_EQ(view.drawnPlacements.size(), 16u);
+        const OsgViewProbe osg(dir + "/" + name + ".flt", name);
+        ASSERT_TRUE(osg.loaded());
+        for (const Point3& eye : eyePoints(osg.bounds())) {
+            const OsgView view = osg.drawFrom(eye);
+            EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9)) << name;
+            EXPECT_EQ(view.drawnPlacements.size(), 16u) << name;
+        }
     }
 }
 
