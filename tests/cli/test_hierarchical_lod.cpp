@@ -184,6 +184,20 @@ void expectEveryPlacementOnceWithinTheBound(const OsgView& view, const Point3& e
         EXPECT_EQ(times, 1u) << name << " from " << at;
 }
 
+// `path` read back with OSG and drawn from eyePoints: no drawn level shows more than the bound,
+// and `placements` placements are drawn from every eye.
+void expectTheBoundWithEveryPlacementDrawn(const std::string& path, const std::string& modelName,
+                                           std::size_t placements)
+{
+    const OsgViewProbe osg(path, modelName);
+    ASSERT_TRUE(osg.loaded()) << path;
+    for (const Point3& eye : eyePoints(osg.bounds())) {
+        const OsgView view = osg.drawFrom(eye);
+        EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9)) << path;
+        EXPECT_EQ(view.drawnPlacements.size(), placements) << path;
+    }
+}
+
 }  // namespace
 
 TEST(CliHierarchicalLod, HoldsTheErrorBoundAndDrawsEveryPlacementOnceWhereverTheEyeIs)
@@ -342,13 +356,7 @@ TEST(CliHierarchicalLod, AStretchedPlacementHoldsTheBoundAsItIsSeen)
         const nlohmann::json report = nlohmann::json::parse(readFile(out + ".json"));
         EXPECT_EQ(report.at("input").at("stretchedPlacements"), 10);
         EXPECT_EQ(report.at("input").at("parts"), 3);  // the knob, tall and wide
-        const OsgViewProbe osg(out + ".flt", mode);
-        ASSERT_TRUE(osg.loaded());
-        for (const Point3& eye : eyePoints(osg.bounds())) {
-            const OsgView view = osg.drawFrom(eye);
-            EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9)) << mode;
-            EXPECT_EQ(view.drawnPlacements.size(), 16u) << mode;
-        }
+        expectTheBoundWithEveryPlacementDrawn(out + ".flt", mode, 16);
     }
 }
 
@@ -381,13 +389,7 @@ TEST(CliHierarchicalLod, PartsPlacedOnceByInlineAreClusteredByTheirFiles)
         EXPECT_EQ(report.at("parts").at(1).at("name"), name == "rooted" ? "ASSEMBLY/part1" : "part1");
         EXPECT_GE(report.at("hlod").at("clusters").get<int>(), 4) << name;
 
-        const OsgViewProbe osg(dir + "/" + name + ".flt", name);
-        ASSERT_TRUE(osg.loaded());
-        for (const Point3& eye : eyePoints(osg.bounds())) {
-            const OsgView view = osg.drawFrom(eye);
-            EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9)) << name;
-            EXPECT_EQ(view.drawnPlacements.size(), 16u) << name;
-        }
+        expectTheBoundWithEveryPlacementDrawn(dir + "/" + name + ".flt", name, 16);
     }
 }
 
