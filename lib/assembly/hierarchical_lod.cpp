@@ -315,7 +315,7 @@ private:
                 collectAt(child, centre, from, merger, error);
                 continue;
             }
-            merger.add(proxy->level, moveOf(child), copies_[child].mirrored());
+            merger.add(proxy->level, moveOf(child));
             error = std::max(error, proxy->error);
         }
     }
@@ -398,7 +398,7 @@ private:
                 gather(child, allowance, merged, inputError);
                 continue;
             }
-            merged.add(best->level, moveOf(child), copies_[child].mirrored());
+            merged.add(best->level, moveOf(child));
             inputError = std::max(inputError, best->error);
         }
     }
@@ -419,7 +419,7 @@ private:
     template <class Sink>
     void addPlacedLevel(const flt::PartPlacement& p, std::size_t k, Sink& sink, double& error) const
     {
-        sink.add(c_.model.definitions[p.definition].levels[k], p.matrix, p.mirrored());
+        sink.add(c_.model.definitions[p.definition].levels[k], p.matrix);
         const std::vector<LodLevel>& measured = c_.parts[p.definition].result.levels;
         if (k < measured.size())
             error = std::max(error, flt::largestScale(p.matrix) * measured[k].hausdorffMax);

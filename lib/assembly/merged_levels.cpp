@@ -63,14 +63,15 @@ std::size_t drawables(const flt::Level& level)
     return n;
 }
 
-void MergedParts::add(const flt::Level& level, const flt::Mat4d& m, bool mirrored)
+void MergedParts::add(const flt::Level& level, const flt::Mat4d& m)
 {
     for (const flt::Part& part : level.parts)
-        addPart(part, m, mirrored);
+        addPart(part, m);
 }
 
-void MergedParts::addPart(const flt::Part& part, const flt::Mat4d& m, bool mirrored)
+void MergedParts::addPart(const flt::Part& part, const flt::Mat4d& m)
 {
+    const bool mirrored = flt::mirrors(m);
     std::map<std::size_t, std::vector<std::uint32_t>> remaps;  // per merged part
     for (std::size_t t = 0; t < part.triangles.size(); ++t) {
         const std::size_t target = partFor(triangleColour(part, t));
@@ -105,8 +106,9 @@ std::size_t MergedParts::partFor(const Rgba& colour)
     return byColour_[colour] = parts_.size() - 1;
 }
 
-void LevelMerger::add(const flt::Level& level, const flt::Mat4d& m, bool mirrored)
+void LevelMerger::add(const flt::Level& level, const flt::Mat4d& m)
 {
+    const bool mirrored = flt::mirrors(m);
     vrml::Mat4 placement;
     placement.m = m;
     const vrml::Mat4 normalMatrix = placement.normalMatrix();

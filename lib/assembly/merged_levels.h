@@ -31,13 +31,13 @@ class MergedParts {
 public:
     explicit MergedParts(const flt::Vec3d& centre) : centre_(centre) {}
 
-    void add(const flt::Level& level, const flt::Mat4d& m, bool mirrored);
+    void add(const flt::Level& level, const flt::Mat4d& m);
 
     std::size_t triangles() const { return triangles_; }
     std::vector<vrml::Part> take() { return std::move(parts_); }
 
 private:
-    void addPart(const flt::Part& part, const flt::Mat4d& m, bool mirrored);
+    void addPart(const flt::Part& part, const flt::Mat4d& m);
     std::size_t partFor(const Rgba& colour);
 
     static constexpr std::uint32_t kUnset = std::numeric_limits<std::uint32_t>::max();
@@ -51,7 +51,7 @@ private:
 // one drawable, its pieces unchanged.
 class LevelMerger {
 public:
-    void add(const flt::Level& level, const flt::Mat4d& m, bool mirrored);
+    void add(const flt::Level& level, const flt::Mat4d& m);
 
     bool empty() const { return out_.triangles.empty(); }
 
