@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <functional>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -290,16 +290,19 @@ std::size_t InstancedModel::placedTriangles() const
 PlacementPrecision placementPrecision(const InstancedModel& model)
 {
     PlacementPrecision out;
+    std::vector<double> reach;  // per definition, how far its finest level reaches from its centre
+    for (const PartDefinition& d : model.definitions)
+        reach.push_back(d.levels.empty() ? 0.0 : d.levels.front().reachFrom(d.levels.front().center));
     Vec3d lo{0, 0, 0}, hi{0, 0, 0};
     double& farthest = out.farthest;
     for (std::size_t i = 0; i < model.placements.size(); ++i) {
         const PartPlacement& p = model.placements[i];
-        const Level& finest = model.definitions.at(p.definition).levels.front();
-        const Vec3d centre = transformed(p.matrix, finest.center);
-        const double reach = largestScale(p.matrix) * finest.reachFrom(finest.center);
+        const PartDefinition& d = model.definitions.at(p.definition);
+        const Vec3d centre = transformed(p.matrix, d.levels.empty() ? Vec3d{0, 0, 0} : d.levels.front().center);
+        const double placedReach = largestScale(p.matrix) * reach[p.definition];
         for (int k = 0; k < 3; ++k) {
-            lo[k] = i == 0 ? centre[k] - reach : std::min(lo[k], centre[k] - reach);
-            hi[k] = i == 0 ? centre[k] + reach : std::max(hi[k], centre[k] + reach);
+            lo[k] = i == 0 ? centre[k] - placedReach : std::min(lo[k], centre[k] - placedReach);
+            hi[k] = i == 0 ? centre[k] + placedReach : std::max(hi[k], centre[k] + placedReach);
             farthest = std::max(farthest, std::abs(centre[k]));
         }
     }
@@ -320,8 +323,7 @@ std::string placementPrecisionWarning(const InstancedModel& model, const std::st
                   "the parts are placed up to %.6g %s from the origin, where the 32-bit numbers of OpenFlight's "
                   "Matrix records (and of OpenSceneGraph) are %.3g %s apart: parts may stand up to half that off "
                   "where they belong; export the model nearer the origin",
-                  p.farthest, unitName.c_str(), p.spacing,
-                  unitName.c_str());
+                  p.farthest, unitName.c_str(), p.spacing, unitName.c_str());
     return text;
 }
 
