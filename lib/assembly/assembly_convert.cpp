@@ -90,6 +90,19 @@ void keepLevels(LodSetResult& result, const std::vector<std::size_t>& kept)
     }
 }
 
+// Where the first simplified level of `levels` is switched in once held at the nearest point
+// (0: it has one level).
+double firstHeldSwitch(const std::vector<flt::Level>& levels)
+{
+    std::vector<flt::Level> ranges(levels.size());
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+        ranges[k].switchIn = levels[k].switchIn;
+        ranges[k].switchOut = levels[k].switchOut;
+    }
+    cadlod::holdAtNearestPoint(ranges, reachOf(levels));
+    return ranges.size() > 1 ? ranges[1].switchOut : 0.0;
+}
+
 // A part's LOD node picks its level by the eye's distance to the part's centre; moved out
 // as nearest_point.h says, every switch keeps its promise at the part's nearest point too.
 void holdAtNearestPoint(std::vector<flt::Level>& levels, LodSetResult& result)
@@ -140,7 +153,7 @@ PartChain convertPart(vrml::Geometry& geometry, const PartWelding& welding, cons
     skippedFaces += skipped;
     definition.name = geometry.name;
     definition.levels = std::move(levels.levels);
-    definition.chunks = chunkLevels(definition.levels, smallestChunkedRadius);
+    definition.chunks = chunkLevels(definition.levels, smallestChunkedRadius, firstHeldSwitch(definition.levels));
     holdAtNearestPoint(definition.levels, chain.result);
     return chain;
 }

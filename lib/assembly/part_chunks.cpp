@@ -92,8 +92,10 @@ std::map<int, flt::Level> splitLevel(const flt::Level& level, const ChunkGrid& g
     return cells;
 }
 
-// The chunk's levels, each from where it holds at the chunk's nearest point.
-std::vector<flt::Level> chunkChain(std::vector<flt::Level> levels, const std::string& name)
+// The chunk's levels, each from where it holds at the chunk's nearest point, up to the last
+// one drawn while the eye is nearer than `drawnTo` to `partCentre`.
+std::vector<flt::Level> chunkChain(std::vector<flt::Level> levels, const std::string& name,
+                                   const flt::Vec3d& partCentre, double drawnTo)
 {
     Box3 box;
     for (const flt::Level& l : levels)
@@ -106,12 +108,22 @@ std::vector<flt::Level> chunkChain(std::vector<flt::Level> levels, const std::st
         reach.push_back(levels[k].reachFrom(centre));
     }
     holdAtNearestPoint(levels, reach);
+    double squared = 0;
+    for (int a = 0; a < 3; ++a)
+        squared += (centre[a] - partCentre[a]) * (centre[a] - partCentre[a]);
+    const double farthest = drawnTo + std::sqrt(squared);
+    std::size_t drawn = 1;
+    while (drawn < levels.size() && levels[drawn].switchOut < farthest)
+        ++drawn;
+    levels.resize(drawn);
+    levels.back().switchIn = kNeverCulled;  // the part's own levels take over first
     return levels;
 }
 
 }  // namespace
 
-std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius)
+std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius,
+                                                 double drawnTo)
 {
     if (levels.size() < 2)
         return {};
@@ -140,7 +152,8 @@ std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& 
             l.switchOut = levels[k].switchOut;
             chain.push_back(std::move(l));
         }
-        chunks.push_back(chunkChain(std::move(chain), levels.front().name + " chunk " + std::to_string(entry.first)));
+        chunks.push_back(chunkChain(std::move(chain), levels.front().name + " chunk " + std::to_string(entry.first),
+                                    levels.front().center, drawnTo));
     }
     return chunks;
 }

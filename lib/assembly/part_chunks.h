@@ -27,9 +27,12 @@ inline constexpr double kChunkedPartShare = 1.0 / 16.0;
 inline constexpr std::size_t kLeastChunkTriangles = 64;
 
 // `levels`: the part's chain, finest first, each switched in where its error projects to the
-// pixel error at the centre (not yet held at the nearest point). Empty when chunks would not
-// let any level switch nearer, the part's radius is below `smallestRadius`, or its chunks
-// would hold fewer than kLeastChunkTriangles each.
-std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius);
+// pixel error at the centre (not yet held at the nearest point); the chunks are drawn while
+// the eye is nearer than `drawnTo` to the part's centre (where its first simplified level,
+// held at its nearest point, takes over): a chunk keeps the levels it shows there. Empty
+// when chunks would not let any level switch nearer, the part's radius is below
+// `smallestRadius`, or its chunks would hold fewer than kLeastChunkTriangles each.
+std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius,
+                                                 double drawnTo);
 
 }  // namespace cadlod

@@ -171,6 +171,8 @@ private:
         return true;
     }
 
+    // A chunked part: its chunks under a LOD record drawn nearer than its first simplified
+    // level, that level and the coarser ones beside it.
     void writeLevelsOf(const WrittenForm& form)
     {
         const PartDefinition& d = model_.definitions[form.first];
@@ -178,6 +180,11 @@ private:
             levels_.writeLevels(d.levels, writesLodRecords(d.levels), form.second);
             return;
         }
+        const std::string near = d.name + " chunks";
+        writeLod(w_, near, d.chunksDrawnTo(), 0.0, d.levels.front().center);
+        writeLongIdIfNeeded(w_, near);
+        writePush(w_);
+        ++stats_.lodNodes;
         for (std::size_t c = 0; c < d.chunks.size(); ++c) {
             const std::string name = d.name + " chunk " + std::to_string(c + 1);
             writeGroup(w_, name);
@@ -186,6 +193,8 @@ private:
             levels_.writeLevels(d.chunks[c], true, form.second);
             writePop(w_);
         }
+        writePop(w_);
+        levels_.writeLevels({d.levels.begin() + 1, d.levels.end()}, true, form.second, 1);
     }
 
     const InstancedModel& model_;
@@ -244,6 +253,10 @@ bool validate(const InstancedModel& model, const WriteOptions& options, std::str
     }
     for (const PartDefinition& d : model.definitions) {
         bool valid = validateLevels(d.levels, error);
+        if (valid && !d.chunks.empty() && d.levels.size() < 2) {
+            error = "it is in chunks and has one level, drawn by none of them";
+            valid = false;
+        }
         for (const std::vector<Level>& chunk : d.chunks)
             valid = valid && validateLevels(chunk, error);
         if (!valid) {

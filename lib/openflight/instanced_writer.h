@@ -24,9 +24,12 @@ namespace cadlod::flt {
 struct PartDefinition {
     std::string name;
     std::vector<Level> levels;  // finest first, in the part's own frame
-    // Non-empty: what is written in place of `levels`, each chunk (a piece of every level,
-    // switched by its own centre) in a Group of its own.
+    // Non-empty: what is drawn in place of `levels` nearer than levels[1] is (chunksDrawnTo),
+    // each chunk (a piece of the levels drawn there, switched by its own centre) in a Group
+    // of its own. A chunked part has two levels or more.
     std::vector<std::vector<Level>> chunks;
+
+    double chunksDrawnTo() const { return levels.size() > 1 ? levels[1].switchOut : 0.0; }
 };
 
 struct PartPlacement {

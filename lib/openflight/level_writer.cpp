@@ -104,11 +104,11 @@ void LevelWriter::writeSharedVertexPalette(const std::vector<Level>& levels)
                             part.hasVertexColors() ? &part.vertexColors[v] : nullptr);
 }
 
-void LevelWriter::writeLevels(const std::vector<Level>& levels, bool lodRecords, bool reversed)
+void LevelWriter::writeLevels(const std::vector<Level>& levels, bool lodRecords, bool reversed, std::size_t first)
 {
     reversed_ = reversed;
     for (std::size_t l = 0; l < levels.size(); ++l)
-        writeLevel(levels[l], l, lodRecords);
+        writeLevel(levels[l], first + l, lodRecords);
 }
 
 void LevelWriter::writeGeometry(const Level& level, bool reversed)

@@ -48,7 +48,8 @@ public:
     // order writeLevels will refer to them.
     void writeSharedVertexPalette(const std::vector<Level>& levels);
     // `reversed`: every triangle turned round, for a mirrored placement to keep its faces out.
-    void writeLevels(const std::vector<Level>& levels, bool lodRecords, bool reversed = false);
+    // `first`: the index of levels[0] in its chain, for the names of unnamed levels.
+    void writeLevels(const std::vector<Level>& levels, bool lodRecords, bool reversed = false, std::size_t first = 0);
     // One level's Objects, without a LOD record (`reversed` as for writeLevels).
     void writeGeometry(const Level& level, bool reversed = false);
 

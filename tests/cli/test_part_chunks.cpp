@@ -38,7 +38,7 @@ flt::Level strip(int cells, double switchOut, double switchIn)
 TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
 {
     const std::vector<flt::Level> levels{strip(256, 0, 1.0), strip(16, 1.0, 4.0), strip(4, 4.0, 1e30)};
-    const auto chunks = chunkLevels(levels, 0.0);
+    const auto chunks = chunkLevels(levels, 0.0, kNeverCulled);
     ASSERT_EQ(chunks.size(), 4u);  // four along x; the strip is flat in y and z
     for (std::size_t k = 0; k < levels.size(); ++k) {
         std::size_t triangles = 0;
@@ -55,13 +55,23 @@ TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
         EXPECT_DOUBLE_EQ(chunk[0].switchIn, chunk[1].switchOut);
         EXPECT_LT(chunk[1].switchOut, switchAtNearestPoint(1.0, wholeReach) / 2);
     }
-    EXPECT_TRUE(chunkLevels(levels, 1.0).empty());  // smaller than the smallest part cut
+    EXPECT_TRUE(chunkLevels(levels, 1.0, kNeverCulled).empty());  // smaller than the smallest part cut
+
+    // Drawn only while the eye is nearer than the whole part's first simplified level (held at
+    // its nearest point) to its centre, a chunk keeps the levels it shows there: level 2,
+    // from 4.1 m off a chunk's centre, never is within 3.4 m of it.
+    const double drawnTo = switchAtNearestPoint(1.0, wholeReach);
+    for (const auto& chunk : chunkLevels(levels, 0.0, drawnTo)) {
+        ASSERT_EQ(chunk.size(), 2u);
+        EXPECT_LT(chunk[1].switchOut, drawnTo);
+        EXPECT_GE(chunk[1].switchIn, kNeverCulled);
+    }
 
     // 128 triangles would give each of the four chunks 32, fewer than kLeastChunkTriangles:
     // four draw calls where one draws it all.
     const std::vector<flt::Level> few{strip(64, 0, 1.0), strip(16, 1.0, 4.0), strip(4, 4.0, 1e30)};
     EXPECT_LT(few.front().triangleCount(), 4 * kLeastChunkTriangles);
-    EXPECT_TRUE(chunkLevels(few, 0.0).empty());
+    EXPECT_TRUE(chunkLevels(few, 0.0, kNeverCulled).empty());
 }
 
 }  // namespace cadlod::test
