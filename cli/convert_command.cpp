@@ -184,8 +184,8 @@ void writeFlt(OutputSet& outputs, const std::string& path, const flt::LodModel& 
 // beside a fixed-point number.
 std::string lengthText(double metres) { return metresText(metres, 4); }
 
-void printSummary(const LodSetResult& r, const flt::WriteStats& written, const std::string& output,
-                  const LoadedMesh& loaded)
+// The chain's levels as a table, and its notes.
+void printLevels(const LodSetResult& r, const flt::WriteStats& written, const std::string& output)
 {
     std::fprintf(stderr, "cadlod: %s: %zu levels, %zu triangles, %zu bytes (model size %s)\n", output.c_str(),
                  r.levels.size(), written.triangles, written.bytes, lengthText(r.modelSize).c_str());
@@ -195,6 +195,12 @@ void printSummary(const LodSetResult& r, const flt::WriteStats& written, const s
                      r.modelSize > 0 ? 100.0 * l.hausdorffMax / r.modelSize : 0.0, lengthText(l.switchOut).c_str(),
                      l.switchIn >= kNeverCulled ? "never" : lengthText(l.switchIn).c_str());
     printFolded("note", r.warnings);
+}
+
+void printSummary(const LodSetResult& r, const flt::WriteStats& written, const std::string& output,
+                  const LoadedMesh& loaded)
+{
+    printLevels(r, written, output);
     printImportSummary(loaded);
     printFindingsSummary(loaded);
 }
@@ -220,6 +226,10 @@ void printAssemblySummary(const AssemblyConversion& c, const flt::InstancedWrite
             notes.push_back(p.name + ": " + w);
     printFolded("note", notes);
 }
+
+// A model of one placed part (a file of one part, kept as placed once for --hlod): it reads
+// as a part, its levels shown rather than a table of parts.
+bool onePlacedPart(const AssemblyConversion& c) { return c.model.placements.size() == 1; }
 
 // What the importer did to an assembly: the file's findings, and each distinct part welded
 // as a whole model is.
@@ -253,7 +263,7 @@ nlohmann::json assemblyReportJson(const ConvertArgs& a, const AssemblyConversion
                          {"placements", written.placements}, {"faces", c.model.placedTriangles()},
                          {"mergedVertices", loaded.mergedVertices}, {"stretchedPlacements", c.stretchedPlacements}};
     input.update(findingsJson(loaded));
-    return {
+    nlohmann::json report{
         {"command", "convert"},
         {"input", input},
         {"output", {{"path", a.output}, {"bytes", written.bytes}, {"triangles", written.triangles},
@@ -267,6 +277,11 @@ nlohmann::json assemblyReportJson(const ConvertArgs& a, const AssemblyConversion
         {"warningCount", warningCount(loaded)},
         {"timings", {{"importSeconds", importSeconds}, {"lodSeconds", lodSeconds}, {"writeSeconds", writeSeconds},
                      {"totalSeconds", totalSeconds}}}};
+    if (onePlacedPart(c)) {
+        report["modelSize"] = c.parts.front().result.modelSize;
+        report["levels"] = levelsJson(c.parts.front().result, viewOf(a));
+    }
+    return report;
 }
 
 bool clustersPlacements(const ConvertArgs& a, const AssemblyConversion& c)
@@ -306,11 +321,27 @@ nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
             {"largeShare", clusterTree(a).largeShare}};
 }
 
-void printHierarchySummary(const ConvertArgs& a, const HierarchyStats& h)
+// Chunks of a part placed once, the whole model: what the hierarchy is for it.
+void printOnePlacementSummary(const AssemblyConversion& c)
 {
+    const flt::PartDefinition& part = c.model.definitions.at(c.model.placements.front().definition);
+    std::fprintf(stderr, "cadlod: hlod auto: one placed part, no clusters; its levels switch where they hold at its "
+                         "nearest point");
+    if (!part.chunks.empty())
+        std::fprintf(stderr, ", and nearer than its first simplified level it is drawn in %zu chunks, each "
+                             "switched by its own centre", part.chunks.size());
+    std::fputc('\n', stderr);
+}
+
+void printHierarchySummary(const ConvertArgs& a, const AssemblyConversion& c, const HierarchyStats& h)
+{
+    if (h.clusters == 0 && hierarchical(a) && c.model.placements.size() == 1) {
+        printOnePlacementSummary(c);
+        return;
+    }
     if (h.clusters == 0) {
         std::fprintf(stderr, "cadlod: hlod off: one LOD node per placed part%s\n",
-                     a.hlod != "off" ? (a.lod == "auto" ? " (one placement)" : " (a level list has no errors)") : "");
+                     a.hlod != "off" ? " (a level list has no errors)" : "");
         return;
     }
     std::fprintf(stderr,
@@ -377,8 +408,11 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     if (!placementWarning.empty())
         printFolded("warning", {placementWarning});
     if (!a.common.quiet) {
-        printAssemblySummary(c, written, a.output);
-        printHierarchySummary(a, hierarchy);
+        if (onePlacedPart(c))
+            printLevels(c.parts.front().result, written, a.output);
+        else
+            printAssemblySummary(c, written, a.output);
+        printHierarchySummary(a, c, hierarchy);
         printImportSummary(imported);
         printFindingsSummary(imported);
     }
@@ -396,6 +430,7 @@ void runConvert(const ConvertArgs& a)
     ImportSettings importing = importSettings(a.import);
     importing.keepInstances = a.instances == "keep";
     importing.placeParts = importing.keepInstances && hierarchical(a);
+    importing.placeWholeModel = importing.placeParts && a.exporting.records == "mesh";
     importing.unitScaling = vrml::UnitScaling::PowerOfTwo;
     const SaveSettings saving = saveSettings(a.exporting);
     progress::enable(!a.common.quiet);

@@ -103,7 +103,7 @@ LoadedMesh loadVrml(const std::string& path, CoreMesh& m, const ImportSettings& 
     info.lengthScale = imported.assumed.remainingScale;
     info.invalidFaces = imported.scene.stats.skippedFaces;
     if (settings.placeParts && assembly && imported.scene.assembly.empty() &&
-        vrml::namedParts(imported.scene.parts) > 1)
+        (vrml::namedParts(imported.scene.parts) > 1 || settings.placeWholeModel))
         imported.scene.assembly = vrml::partsPlacedOnce(std::move(imported.scene.parts));
     if (!imported.scene.assembly.empty()) {
         info.parts = imported.scene.assembly.geometries.size();

@@ -35,6 +35,9 @@ struct ImportSettings {
     // VRML, with keepInstances: a file that shares nothing but has several parts is kept as
     // its parts, each placed once (vrml::partsPlacedOnce).
     bool placeParts = false;
+    // VRML, with placeParts: a file of one part (or none named) is kept as that part placed
+    // once, so that it is chunked and its levels held at its nearest point too.
+    bool placeWholeModel = false;
     // VRML: PowerOfTwo reads at the power of two nearest to the unit, so that the simplifier
     // decides alike in every unit; LoadedMesh::lengthScale is the rest.
     vrml::UnitScaling unitScaling = vrml::UnitScaling::Exact;

@@ -64,10 +64,10 @@ Converted convert(const VrmlSource& source, const LodChainOptions& chain, bool f
     if (!imported.ok())
         throw std::runtime_error(imported.error);
     vrml::Scene& scene = imported.scene;
-    if (scene.assembly.empty() && vrml::namedParts(scene.parts) > 1)
+    if (scene.assembly.empty())  // each named part placed once; a file of one part is that part placed once
         scene.assembly = vrml::partsPlacedOnce(std::move(scene.parts));
-    if (scene.assembly.placementCount() < 2)
-        throw std::runtime_error(source.path + ": one part, nothing to put in clusters; use Hierarchy: one LOD node");
+    if (scene.assembly.placementCount() == 0)
+        throw std::runtime_error(source.path + ": no shape to place");
     Converted out;
     out.lengthScale = imported.assumed.remainingScale;
     LodChainOptions options = chain;
@@ -93,7 +93,7 @@ Converted convert(const VrmlSource& source, const LodChainOptions& chain, bool f
     hierarchy.fewestCalls = fewestCalls;
     if (fewestCalls)
         hierarchy.tree = kFewestCallsTree;
-    {
+    if (out.conversion.model.placements.size() > 1) {  // one placed part: its chunks and held levels
         ProgressSpan proxies(spans, partsEnd, kWritingStart);
         out.hierarchy = buildHierarchy(out.conversion, hierarchy, welding, build, spans);
     }

@@ -178,6 +178,8 @@ AssemblyConversion convertAssembly(vrml::Scene& scene, const std::string& modelN
     std::size_t total = 0;
     std::vector<std::size_t> before;  // the triangles of the parts before each
     for (std::size_t g : geometries) {
+        if (scene.assembly.geometries[g].name.empty())  // what no node names: the model's own
+            scene.assembly.geometries[g].name = modelName;
         before.push_back(total);
         total += scene.assembly.geometries[g].triangleCount();
     }

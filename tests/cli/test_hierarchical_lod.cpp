@@ -24,6 +24,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -391,6 +392,78 @@ TEST(CliHierarchicalLod, PartsPlacedOnceByInlineAreClusteredByTheirFiles)
 
         expectTheBoundWithEveryPlacementDrawn(dir + "/" + name + ".flt", name, 16);
     }
+}
+
+namespace {
+
+// A sheet 2 m by 0.25 m of 256 x 32 quads, bent in gentle waves 3 cm high: one Shape, which no
+// DEF names.
+std::string writeWavySheet(const std::string& dir)
+{
+    std::ostringstream text;
+    text << "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [\n";
+    constexpr int kAlong = 256, kAcross = 32;
+    for (int j = 0; j <= kAcross; ++j)
+        for (int i = 0; i <= kAlong; ++i)
+            text << 2.0 * i / kAlong << ' ' << 0.25 * j / kAcross << ' '
+                 << 0.03 * std::sin(12.0 * i / kAlong) * std::cos(4.0 * j / kAcross) << ",\n";
+    text << "] } coordIndex [\n";
+    for (int j = 0; j < kAcross; ++j)
+        for (int i = 0; i < kAlong; ++i) {
+            const int a = j * (kAlong + 1) + i;
+            text << a << ' ' << a + 1 << ' ' << a + kAlong + 2 << ' ' << a + kAlong + 1 << " -1\n";
+        }
+    text << "] } }\n";
+    const std::string path = dir + "/sheet.wrl";
+    std::ofstream(path) << text.str();
+    return path;
+}
+
+}  // namespace
+
+// A file of one part, or of shapes no DEF names, is one part placed once: its levels switch
+// where they hold at its nearest point, and a large one is drawn in chunks near the eye, so
+// that the bound holds inside and along it as it does on an assembly; far off, the part's
+// own levels draw it in one call, not a call per chunk. With --hlod off it is one LOD node
+// switched by its centre, which shows more than the bound from beside it.
+TEST(CliHierarchicalLod, AFileOfOnePartHoldsTheBoundNearItAndIsOneDrawableFarOff)
+{
+    const std::string dir = freshDirectory("hlod_one_part");
+    const std::string input = writeWavySheet(dir);
+    const CliRun run = runCadlod({"convert", input, "-o", dir + "/sheet.flt", "--report", dir + "/sheet.json"});
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    EXPECT_NE(run.stderrText.find("chunks, each switched by its own centre"), std::string::npos) << run.stderrText;
+    const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/sheet.json"));
+    EXPECT_GE(report.at("levels").size(), 3u);
+    EXPECT_EQ(report.at("input").at("placements"), 1);
+
+    const OsgViewProbe osg(dir + "/sheet.flt", "sheet");
+    ASSERT_TRUE(osg.loaded());
+    for (const OsgLodRanges& node : osg.lodNodes()) {
+        std::vector<std::pair<double, double>> r = node.ranges;
+        std::sort(r.begin(), r.end());
+        for (std::size_t i = 0; i + 1 < r.size(); ++i)
+            EXPECT_NEAR(r[i].second, r[i + 1].first, 1e-6 * r[i].second);
+    }
+    const std::vector<Point3> eyes = eyePoints(osg.bounds());
+    for (const Point3& eye : eyes) {
+        const OsgView view = osg.drawFrom(eye);
+        EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9));
+        EXPECT_GE(view.triangles, 1u);  // drawn from every eye
+        const std::size_t i = std::size_t(&eye - &eyes.front());
+        if (i < 52)  // inside and walking: its chunks
+            EXPECT_GT(view.drawables, 1u);
+        else if (i >= 56)  // from 12 times the diagonal on: its own levels
+            EXPECT_EQ(view.drawables, 1u);
+    }
+
+    const CliRun off = runCadlod({"convert", input, "-o", dir + "/one_node.flt", "--hlod", "off"});
+    ASSERT_EQ(off.exitCode, 0) << off.stderrText;
+    const OsgViewProbe oneNode(dir + "/one_node.flt", "one_node");
+    double worst = 0;
+    for (const Point3& eye : eyePoints(oneNode.bounds()))
+        worst = std::max(worst, oneNode.drawFrom(eye).worstApparentPx);
+    EXPECT_GT(worst, kApparentErrorBound);
 }
 
 // The parts' chains and the clusters' proxies run at once on several threads; what they make

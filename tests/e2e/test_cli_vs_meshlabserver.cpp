@@ -127,3 +127,31 @@ TEST(HeadlessRoutes, PerPartAndClusterNeverWritesOverItsInput)
     EXPECT_NE(run.output.find("give it the .flt extension"), std::string::npos) << run.output;
     EXPECT_TRUE(readText(input) == before);
 }
+
+// A file of one part (shapes no DEF names): the filter writes it as the command does, that
+// part placed once, its levels held at its nearest point, where it used to refuse it.
+TEST(HeadlessRoutes, PerPartAndClusterWritesAFileOfOnePartAsTheCommandDoes)
+{
+    const std::string dir = scratchDir("routes_hlod_one_part");
+    std::filesystem::create_directories(dir + "/server");
+    std::filesystem::create_directories(dir + "/command");
+    const std::string input = dir + "/one.wrl";
+    writeText(input, "#VRML V2.0 utf8\nShape { geometry Sphere { radius 0.5 } }\n"
+                     "Transform { translation 2 0 0 children Shape { geometry Box { size 1 0.2 0.2 } } }\n");
+    const std::string viaServer = dir + "/server/one.flt", viaCommand = dir + "/command/one.flt";
+    std::remove(viaServer.c_str());
+    std::remove(viaCommand.c_str());
+    writeText(dir + "/hlod.mlx", perPartAndCluster(viaServer));
+    const ServerRun server = runMeshlabServer({"-i", input, "-s", dir + "/hlod.mlx"}, 300);
+    ASSERT_TRUE(server.ok()) << server.output;
+    const std::string command = "env -u DISPLAY " + std::string(CADLOD_CLI) + " convert '" + input + "' -o '" +
+                                viaCommand + "' > '" + dir + "/command.log' 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << readText(dir + "/command.log");
+    const std::string a = afterHeader(readText(viaServer)), b = afterHeader(readText(viaCommand));
+    ASSERT_GT(a.size(), 1000u);
+    EXPECT_TRUE(a == b) << "the filter's file differs from the command's: " << a.size() << " against " << b.size()
+                        << " bytes after the header";
+    const OsgProbe probe = probeWithOsg(viaServer);
+    ASSERT_TRUE(probe.loaded);
+    ASSERT_FALSE(probe.lods.empty());
+}
