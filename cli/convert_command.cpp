@@ -284,15 +284,12 @@ nlohmann::json assemblyReportJson(const ConvertArgs& a, const AssemblyConversion
     return report;
 }
 
-bool clustersPlacements(const ConvertArgs& a, const AssemblyConversion& c)
-{
-    return hierarchical(a) && c.model.placements.size() > 1;
-}
-
+// The placements in clusters with proxies (a model of one placement: none, its levels made
+// one drawable each as an assembly's are).
 HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, const ImportSettings& importing,
                                  double lengthScale)
 {
-    if (!clustersPlacements(a, c))
+    if (!hierarchical(a))
         return {};
     HierarchyOptions options;
     options.tree = clusterTree(a);

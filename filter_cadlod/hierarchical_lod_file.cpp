@@ -93,7 +93,7 @@ Converted convert(const VrmlSource& source, const LodChainOptions& chain, bool f
     hierarchy.fewestCalls = fewestCalls;
     if (fewestCalls)
         hierarchy.tree = kFewestCallsTree;
-    if (out.conversion.model.placements.size() > 1) {  // one placed part: its chunks and held levels
+    {
         ProgressSpan proxies(spans, partsEnd, kWritingStart);
         out.hierarchy = buildHierarchy(out.conversion, hierarchy, welding, build, spans);
     }

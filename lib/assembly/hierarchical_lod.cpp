@@ -74,6 +74,8 @@ public:
     HierarchyStats build()
     {
         drawPartsInOneCall();
+        if (c_.model.placements.size() < 2)
+            return stats_;  // one placed part: nothing to cluster
         std::vector<Box3> boxes;
         for (const flt::PartPlacement& p : c_.model.placements)
             boxes.push_back(placedBox(c_.model.definitions[p.definition].levels.front(), p.matrix));

@@ -101,7 +101,8 @@ struct HierarchyStats {
     std::size_t mirrored = 0;        // of those, copies seen in a mirror
 };
 
-// Puts c.model's placements into clusters with proxies, each proxy made a span of `progress`.
+// Puts c.model's placements into clusters with proxies, each proxy made a span of `progress`;
+// every level of every part becomes one drawable. A model of one placement gets no clusters.
 // The proxies of the clusters of one height are made at once (parallel_tasks.h).
 // Throws std::runtime_error when a proxy cannot be built.
 HierarchyStats buildHierarchy(AssemblyConversion& c, const HierarchyOptions& options, const PartWelding& welding,

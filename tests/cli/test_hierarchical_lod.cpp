@@ -396,8 +396,8 @@ TEST(CliHierarchicalLod, PartsPlacedOnceByInlineAreClusteredByTheirFiles)
 
 namespace {
 
-// A sheet 2 m by 0.25 m of 256 x 32 quads, bent in gentle waves 3 cm high: one Shape, which no
-// DEF names.
+// A sheet 2 m by 0.25 m of 256 x 32 quads, bent in gentle waves 3 cm high, and a red box on
+// it: two Shapes, which no DEF names.
 std::string writeWavySheet(const std::string& dir)
 {
     std::ostringstream text;
@@ -414,6 +414,8 @@ std::string writeWavySheet(const std::string& dir)
             text << a << ' ' << a + 1 << ' ' << a + kAlong + 2 << ' ' << a + kAlong + 1 << " -1\n";
         }
     text << "] } }\n";
+    text << "Transform { translation 1 0.125 0.05 children Shape { appearance Appearance { material Material { "
+            "diffuseColor 1 0 0 } } geometry Box { size 0.1 0.1 0.1 } } }\n";
     const std::string path = dir + "/sheet.wrl";
     std::ofstream(path) << text.str();
     return path;
@@ -453,7 +455,7 @@ TEST(CliHierarchicalLod, AFileOfOnePartHoldsTheBoundNearItAndIsOneDrawableFarOff
         const std::size_t i = std::size_t(&eye - &eyes.front());
         if (i < 52)  // inside and walking: its chunks
             EXPECT_GT(view.drawables, 1u);
-        else if (i >= 56)  // from 12 times the diagonal on: its own levels
+        else if (i >= 56)  // from 12 times the diagonal on: its own levels, both colours in one call
             EXPECT_EQ(view.drawables, 1u);
     }
 
