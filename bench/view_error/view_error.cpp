@@ -9,7 +9,8 @@
 // s). Prints per path the worst and mean worst error, the triangles drawn as a share of level
 // 0 and the drawables (mean, most, and of them the cluster proxies); with --estimate REF, also
 // the share the per-cluster estimate of REF's chain draws (cluster_estimate.h) and the ratio
-// of the two, and the same for the estimate's cells as LOD nodes; with --walk-csv, every walk
+// of the two, and the same for the estimate's cells as LOD nodes (with --estimate-triangles
+// FILE, level 0's triangles are FILE's, the shares REF's); with --walk-csv, every walk
 // point's figures; with --box, the paths are laid in that box rather than the model's own.
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
@@ -200,6 +201,11 @@ int main(int argc, char** argv)
     app.add_option("files", files, "OpenFlight files to measure")->required();
     app.add_option("--estimate", estimateFile,
                    "a one-LOD-node chain of the same model: compare with its per-cluster estimate");
+    std::string estimateTrianglesFile;
+    app.add_option("--estimate-triangles", estimateTrianglesFile,
+                   "with --estimate: where level 0's triangles lie, from this file's finest levels, the shares "
+                   "still from --estimate's chain (a model whose own one-node chain is too large to build, "
+                   "against the chain of a part of it)");
     app.add_option("--walk-csv", walkCsvFile, "write one row per walk eye point and file");
     app.add_option("--box", boxText, "X0,Y0,Z0,X1,Y1,Z1: the box the paths are laid in, instead of the model's");
     CLI11_PARSE(app, argc, argv);
@@ -209,6 +215,15 @@ int main(int argc, char** argv)
     if (!estimateFile.empty() && !readReferenceChain(estimateFile, reference, error)) {
         std::fprintf(stderr, "view_error: %s\n", error.c_str());
         return 1;
+    }
+    if (!estimateTrianglesFile.empty()) {
+        ReferenceChain triangles;
+        if (estimateFile.empty() || !readReferenceChain(estimateTrianglesFile, triangles, error)) {
+            std::fprintf(stderr, "view_error: %s\n",
+                         estimateFile.empty() ? "--estimate-triangles needs --estimate" : error.c_str());
+            return 1;
+        }
+        reference.finestCentroids = std::move(triangles.finestCentroids);
     }
     std::vector<double> box(6);
     if (!boxText.empty() && std::sscanf(boxText.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &box[0], &box[1], &box[2],

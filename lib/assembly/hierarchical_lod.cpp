@@ -225,7 +225,7 @@ private:
         if (node.children.size() + node.items.size() < 2)
             return;  // its one part or cluster is drawn as itself
         if (options_.fewestCalls) {
-            addMergedCandidate(n);
+            addMergedCandidates(n);
             if (placementsBelow(n) < kSimplifiedClusterPlacements || depthOf(n) % kSimplifiedEveryDepths != 0) {
                 select(n);
                 return;
@@ -286,11 +286,22 @@ private:
 
     // The first proxy only merges: what the cluster holds, each piece at the level it shows
     // from the nearest distance the eye can have to it while the proxy is drawn, so that every
-    // piece keeps its own error bound; one draw call where there were many.
-    void addMergedCandidate(std::size_t n)
+    // piece keeps its own error bound; one draw call where there were many. Merged from where
+    // it may first be drawn, then every kMergedCandidateStep farther until its parent's first
+    // proxy may take over: each merge's pieces coarser than the last's.
+    void addMergedCandidates(std::size_t n)
+    {
+        const double first = switchAtNearestPoint(0.0, work_[n].radius);
+        const double parentFirst = n == 0 ? first
+                                          : switchAtNearestPoint(0.0, work_[parent_[n]].radius) +
+                                                distance(work_[parent_[n]].centre, work_[n].centre);
+        for (double from = first; from == first || from < parentFirst; from *= kMergedCandidateStep)
+            addMergedCandidate(n, from);
+    }
+
+    void addMergedCandidate(std::size_t n, double from)
     {
         ClusterWork& work = work_[n];
-        const double from = switchAtNearestPoint(0.0, work.radius);
         LevelMerger merger;
         Candidate candidate;
         collectAt(n, work.centre, from, merger, candidate.error);

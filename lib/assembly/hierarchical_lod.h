@@ -45,7 +45,8 @@ struct HierarchyOptions {
     ViewParams view;
     // Fewest draw calls near the viewer: every cluster is also drawn, from six radii off, as
     // its parts merged unchanged, each at the level it shows from its nearest possible
-    // distance (so that every part keeps its own error), in one draw call; only clusters of
+    // distance (so that every part keeps its own error), in one draw call, and so again from
+    // every kMergedCandidateStep farther, its parts coarser each time; only clusters of
     // kSimplifiedClusterPlacements or more, at every kSimplifiedEveryDepths, also get
     // simplified proxies. Merging gives up instancing: the file holds about the expanded
     // model's geometry again.
@@ -60,6 +61,10 @@ inline constexpr std::size_t kSimplifiedClusterPlacements = 48;
 // placements. Where a cluster has none, its children's proxies stand in, two draw calls
 // where there would be one, and the whole model is not simplified once per depth.
 inline constexpr std::size_t kSimplifiedEveryDepths = 2;
+
+// With fewestCalls, a cluster's merged proxies are made from six radii off and then every
+// this many times farther, until its parent's may take over.
+inline constexpr double kMergedCandidateStep = 1.5;
 
 // With fewestCalls, the tree: leaves of two placements, two nodes below a cluster, and a
 // placement more than half as large as its group kept above the split, so that clusters are

@@ -693,6 +693,18 @@ TEST(CliHierarchicalLod, EveryMergedProxyIsWithinItsErrorOfThePartsItReplaces)
     EXPECT_GE(c.model.clusters[0].proxies.size(), 2u);
     for (std::size_t child : c.model.clusters[0].clusters)
         EXPECT_LE(c.model.clusters[child].proxies.size(), 1u) << c.model.clusters[child].name;
+    // A cluster is merged again 1.5 times farther, its pieces coarser, until its parent's
+    // proxy may take over: each of its proxies lighter than the one before.
+    std::size_t mergedAgain = 0;
+    for (std::size_t n = 1; n < c.model.clusters.size(); ++n) {
+        const flt::PlacementCluster& cluster = c.model.clusters[n];
+        mergedAgain += cluster.proxies.size() > 1;
+        for (std::size_t i = 1; i < cluster.shapes.size(); ++i)
+            EXPECT_LE(c.model.proxyShapes[cluster.shapes[i]].triangleCount(),
+                      c.model.proxyShapes[cluster.shapes[i - 1]].triangleCount())
+                << cluster.name << " proxy " << i + 1;
+    }
+    EXPECT_GE(mergedAgain, 8u);
 }
 
 }  // namespace cadlod::test
