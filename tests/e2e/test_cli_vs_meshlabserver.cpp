@@ -58,30 +58,42 @@ std::string perPartAndCluster(const std::string& file, const std::string& hierar
                                              mlxParam("RichSaveFile", "hierarchyFile", file)})});
 }
 
-// The filter's file against the command's, for Hierarchy `hierarchy` and `cadlod convert
-// --hlod option`.
-void expectTheCommandsFile(const std::string& hierarchy, const std::string& option)
+// The filter's file for `input` (Hierarchy `hierarchy`) against `cadlod convert --hlod
+// option`'s, in `dir`: the same bytes after the header. Returns the filter's log and file.
+struct FilterRun {
+    std::string log;
+    std::string file;
+};
+
+FilterRun expectTheCommandsFileOf(const std::string& input, const std::string& dir, const std::string& hierarchy,
+                                  const std::string& option)
 {
-    const std::string dir = scratchDir("routes_hlod_" + option);
-    const std::string demo = std::string(CADLOD_SOURCE_DIR) + "/docs/sample/cad_assembly.wrl.gz";
+    const std::string name = std::filesystem::path(input).stem().stem().string();  // cad_assembly.wrl.gz
     std::filesystem::create_directories(dir + "/server");
     std::filesystem::create_directories(dir + "/command");
-    const std::string viaServer = dir + "/server/demo.flt", viaCommand = dir + "/command/demo.flt";
+    const std::string viaServer = dir + "/server/" + name + ".flt", viaCommand = dir + "/command/" + name + ".flt";
     std::remove(viaServer.c_str());
     std::remove(viaCommand.c_str());
     writeText(dir + "/hlod.mlx", perPartAndCluster(viaServer, hierarchy));
-    const ServerRun server = runMeshlabServer({"-i", demo, "-s", dir + "/hlod.mlx"}, 300);
-    ASSERT_TRUE(server.ok()) << server.output;
-    EXPECT_NE(server.output.find("clusters of up to"), std::string::npos) << server.output;
-    const std::string command = "env -u DISPLAY " + std::string(CADLOD_CLI) + " convert '" + demo + "' --hlod " +
+    const ServerRun server = runMeshlabServer({"-i", input, "-s", dir + "/hlod.mlx"}, 300);
+    EXPECT_TRUE(server.ok()) << server.output;
+    const std::string command = "env -u DISPLAY " + std::string(CADLOD_CLI) + " convert '" + input + "' --hlod " +
                                 option + " -o '" + viaCommand + "' > '" + dir + "/command.log' 2>&1";
-    ASSERT_EQ(std::system(command.c_str()), 0) << readText(dir + "/command.log");
-
+    EXPECT_EQ(std::system(command.c_str()), 0) << readText(dir + "/command.log");
     const std::string a = afterHeader(readText(viaServer)), b = afterHeader(readText(viaCommand));
-    ASSERT_GT(a.size(), 100000u);
-    EXPECT_TRUE(a == b) << "the filter's file differs from the command's: " << a.size() << " against " << b.size()
-                        << " bytes after the header";
-    const OsgProbe probe = probeWithOsg(viaServer);
+    EXPECT_TRUE(!a.empty() && a == b) << "the filter's file differs from the command's: " << a.size() << " against "
+                                      << b.size() << " bytes after the header";
+    return {server.output, viaServer};
+}
+
+// The same for the bundled demo: its parts' levels and its clusters' proxies.
+void expectTheCommandsFile(const std::string& hierarchy, const std::string& option)
+{
+    const std::string demo = std::string(CADLOD_SOURCE_DIR) + "/docs/sample/cad_assembly.wrl.gz";
+    const FilterRun run = expectTheCommandsFileOf(demo, scratchDir("routes_hlod_" + option), hierarchy, option);
+    EXPECT_NE(run.log.find("clusters of up to"), std::string::npos) << run.log;
+    EXPECT_GT(readText(run.file).size(), 100000u);
+    const OsgProbe probe = probeWithOsg(run.file);
     ASSERT_TRUE(probe.loaded);
     EXPECT_GE(probe.lods.size(), 10u);  // the parts' levels and the clusters' proxies
 }
@@ -133,25 +145,12 @@ TEST(HeadlessRoutes, PerPartAndClusterNeverWritesOverItsInput)
 TEST(HeadlessRoutes, PerPartAndClusterWritesAFileOfOnePartAsTheCommandDoes)
 {
     const std::string dir = scratchDir("routes_hlod_one_part");
-    std::filesystem::create_directories(dir + "/server");
-    std::filesystem::create_directories(dir + "/command");
     const std::string input = dir + "/one.wrl";
     writeText(input, "#VRML V2.0 utf8\nShape { geometry Sphere { radius 0.5 } }\n"
                      "Transform { translation 2 0 0 children Shape { geometry Box { size 1 0.2 0.2 } } }\n");
-    const std::string viaServer = dir + "/server/one.flt", viaCommand = dir + "/command/one.flt";
-    std::remove(viaServer.c_str());
-    std::remove(viaCommand.c_str());
-    writeText(dir + "/hlod.mlx", perPartAndCluster(viaServer));
-    const ServerRun server = runMeshlabServer({"-i", input, "-s", dir + "/hlod.mlx"}, 300);
-    ASSERT_TRUE(server.ok()) << server.output;
-    const std::string command = "env -u DISPLAY " + std::string(CADLOD_CLI) + " convert '" + input + "' -o '" +
-                                viaCommand + "' > '" + dir + "/command.log' 2>&1";
-    ASSERT_EQ(std::system(command.c_str()), 0) << readText(dir + "/command.log");
-    const std::string a = afterHeader(readText(viaServer)), b = afterHeader(readText(viaCommand));
-    ASSERT_GT(a.size(), 1000u);
-    EXPECT_TRUE(a == b) << "the filter's file differs from the command's: " << a.size() << " against " << b.size()
-                        << " bytes after the header";
-    const OsgProbe probe = probeWithOsg(viaServer);
+    const FilterRun run = expectTheCommandsFileOf(input, dir, "1", "auto");
+    EXPECT_GT(readText(run.file).size(), 1000u);
+    const OsgProbe probe = probeWithOsg(run.file);
     ASSERT_TRUE(probe.loaded);
     ASSERT_FALSE(probe.lods.empty());
 }
