@@ -318,12 +318,12 @@ nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
             {"largeShare", clusterTree(a).largeShare}};
 }
 
-// Chunks of a part placed once, the whole model: what the hierarchy is for it.
-void printOnePlacementSummary(const AssemblyConversion& c)
+// What the hierarchy is for a model of one placed part: its held levels, and its chunks.
+void printOnePlacementSummary(const ConvertArgs& a, const AssemblyConversion& c)
 {
     const flt::PartDefinition& part = c.model.definitions.at(c.model.placements.front().definition);
-    std::fprintf(stderr, "cadlod: hlod auto: one placed part, no clusters; its levels switch where they hold at its "
-                         "nearest point");
+    std::fprintf(stderr, "cadlod: hlod %s: one placed part, no clusters; its levels switch where they hold at its "
+                         "nearest point", a.hlod.c_str());
     if (!part.chunks.empty())
         std::fprintf(stderr, ", and nearer than its first simplified level it is drawn in %zu chunks, each "
                              "switched by its own centre", part.chunks.size());
@@ -333,7 +333,7 @@ void printOnePlacementSummary(const AssemblyConversion& c)
 void printHierarchySummary(const ConvertArgs& a, const AssemblyConversion& c, const HierarchyStats& h)
 {
     if (h.clusters == 0 && hierarchical(a) && c.model.placements.size() == 1) {
-        printOnePlacementSummary(c);
+        printOnePlacementSummary(a, c);
         return;
     }
     if (h.clusters == 0) {
