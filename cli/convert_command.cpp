@@ -17,6 +17,7 @@
 #include "lod/lod_chain.h"
 #include "lod/scale_lengths.h"
 #include "openflight/flt_writer.h"
+#include "openflight/local_origin.h"
 #include "openflight/scale_lengths.h"
 
 #include <algorithm>
@@ -374,6 +375,7 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     const HierarchyStats hierarchy = clusterPlacements(a, c, inParts, lengthScale);
     progress::endSpan();
     scaleLengths(c, lengthScale);  // to the unit chosen
+    const std::size_t centred = flt::moveToLocalOrigin(c.model);
     c.model.units = saving.units;
     const double lodSeconds = secondsSince(t1);
     const auto t2 = Clock::now();
@@ -389,22 +391,21 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
     const double writeSeconds = secondsSince(t2);
     progress::done();
     const LoadedMesh imported = assemblyImport(loaded, c);
-    const std::string placementWarning = flt::placementPrecisionWarning(c.model, a.exporting.units);
+    const std::string originNote = flt::localOriginNote(c.model, centred, a.exporting.units);
     if (!a.report.empty())
         outputs.write(a.report, [&](const std::string& temporary) {
             nlohmann::json report = assemblyReportJson(a, c, written, imported, importSeconds, lodSeconds,
                                                        writeSeconds, secondsSince(t0));
             report["hlod"] = hierarchyJson(a, hierarchy);
-            if (!placementWarning.empty()) {
-                report["warnings"].push_back(placementWarning);
-                report["warningCount"] = report["warningCount"].get<std::size_t>() + 1;
-            }
+            report["output"]["origin"] = c.model.origin;
+            if (!originNote.empty())
+                report["notes"] = {originNote};
             return writeJsonTo(temporary, report);
         });
     outputs.commit();
-    if (!placementWarning.empty())
-        printFolded("warning", {placementWarning});
     if (!a.common.quiet) {
+        if (!originNote.empty())
+            printFolded("note", {originNote});
         if (onePlacedPart(c))
             printLevels(c.parts.front().result, written, a.output);
         else

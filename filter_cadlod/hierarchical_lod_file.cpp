@@ -4,6 +4,7 @@
 #include "assembly/hierarchical_lod.h"
 #include "assembly/progress_spans.h"
 #include "mesh/layer_metadata.h"
+#include "openflight/local_origin.h"
 #include "vrml/assembly.h"
 #include "vrml/importer.h"
 
@@ -54,6 +55,7 @@ struct Converted {
     AssemblyConversion conversion;
     HierarchyStats hierarchy;
     double lengthScale = 1.0;
+    std::size_t centredParts = 0;  // parts whose geometry was moved about its own origin (local_origin.h)
 };
 
 // The assembly of `source`, its placements in clusters with proxies; throws with the reason.
@@ -98,6 +100,7 @@ Converted convert(const VrmlSource& source, const LodChainOptions& chain, bool f
         out.hierarchy = buildHierarchy(out.conversion, hierarchy, welding, build, spans);
     }
     scaleLengths(out.conversion, out.lengthScale);  // to the layer's unit
+    out.centredParts = flt::moveToLocalOrigin(out.conversion.model);
     return out;
 }
 
@@ -118,9 +121,9 @@ void logConversion(MeshFilterInterface& plugin, const Converted& c, const Cluste
         plugin.Log("CAD LOD set, per part and cluster: %zu placements scale their part unevenly; each such part is "
                    "simplified as stretched as it is seen",
                    c.conversion.stretchedPlacements);
-    const std::string placementWarning = flt::placementPrecisionWarning(c.conversion.model, "model units");
-    if (!placementWarning.empty())
-        plugin.Log("CAD LOD set, per part and cluster: warning: %s", placementWarning.c_str());
+    const std::string originNote = flt::localOriginNote(c.conversion.model, c.centredParts, "model units");
+    if (!originNote.empty())
+        plugin.Log("CAD LOD set, per part and cluster: %s", originNote.c_str());
     plugin.Log("CAD LOD set, per part and cluster: wrote %s: %zu bytes, %zu triangles in %.2f s (the document is "
                "unchanged: a layer cannot hold instances)",
                qUtf8Printable(output), written.bytes, written.triangles, seconds);

@@ -38,7 +38,7 @@ public:
     bool write(std::string& error)
     {
         writeDatabaseHead(w_, model_.name, model_.units);
-        openRootGroup(w_, model_.name);
+        openRootGroup(w_, model_.name, model_.origin);
         const bool written = model_.clusters.empty() ? writePlacements(all(model_.placements.size()), error)
                                                      : writeCluster(model_.clusters.front(), error);
         if (!written)
@@ -324,20 +324,6 @@ PlacementPrecision placementPrecision(const InstancedModel& model)
     for (int k = 0; k < 3; ++k)
         out.extent = std::max(out.extent, hi[k] - lo[k]);
     return out;
-}
-
-std::string placementPrecisionWarning(const InstancedModel& model, const std::string& unitName)
-{
-    const PlacementPrecision p = placementPrecision(model);
-    if (p.spacing <= kVisiblePlacementSpacing * p.extent)
-        return {};
-    char text[400];
-    std::snprintf(text, sizeof text,
-                  "the parts are placed up to %.6g %s from the origin, where the 32-bit numbers of OpenFlight's "
-                  "Matrix records (and of OpenSceneGraph) are %.3g %s apart: parts may stand up to half that off "
-                  "where they belong; export the model nearer the origin",
-                  p.farthest, unitName.c_str(), p.spacing, unitName.c_str());
-    return text;
 }
 
 std::size_t InstancedModel::proxyTriangles() const

@@ -69,6 +69,9 @@ struct InstancedModel {
     // placement is in exactly one cluster.
     std::vector<PlacementCluster> clusters;
     std::vector<Level> proxyShapes;  // the clusters' proxies' geometry, in model coordinates
+    // Where the root Group puts the model: nonzero only for a model moved about a local origin
+    // (local_origin.h), a translation a float holds exactly.
+    Vec3d origin{0, 0, 0};
 
     std::size_t distinctTriangles() const;  // every definition's levels once
     std::size_t placedTriangles() const;    // the finest level of every placement
@@ -97,12 +100,9 @@ struct PlacementPrecision {
 PlacementPrecision placementPrecision(const InstancedModel& model);
 
 // Where placements stand off by more than this share of how far apart they are, a viewer
-// sees it (gaps between parts that touch): the file is worth a warning.
+// sees it (gaps between parts that touch): such a model is moved about a local origin
+// (local_origin.h).
 inline constexpr double kVisiblePlacementSpacing = 1e-5;
-
-// The warning a model whose placements stand visibly off deserves, its lengths given in
-// `unitName`; empty when they stand where they should.
-std::string placementPrecisionWarning(const InstancedModel& model, const std::string& unitName);
 
 // Mesh records only (Face records share one Vertex Palette, which instances cannot).
 bool writeInstancedOpenFlight(const InstancedModel& model, const WriteOptions& options, std::vector<std::uint8_t>& out,

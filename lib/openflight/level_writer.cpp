@@ -52,11 +52,13 @@ void writeDatabaseHead(ByteWriter& w, const std::string& name, Units units)
     writeMaterial(w, MaterialFields{});
 }
 
-void openRootGroup(ByteWriter& w, const std::string& name)
+void openRootGroup(ByteWriter& w, const std::string& name, const Vec3d& origin)
 {
     writePush(w);
     writeGroup(w, name);
     writeLongIdIfNeeded(w, name);
+    if (origin != Vec3d{0, 0, 0})
+        writeMatrix(w, {{{1, 0, 0, origin[0]}, {0, 1, 0, origin[1]}, {0, 0, 1, origin[2]}, {0, 0, 0, 1}}});
     writePush(w);
 }
 

@@ -13,7 +13,8 @@ namespace cadlod::flt {
 // Header, Color Palette and Material Palette: how every database starts.
 void writeDatabaseHead(ByteWriter& w, const std::string& name, Units units);
 // The root Group, named after the model, with the Push into it; closeRootGroup pops out.
-void openRootGroup(ByteWriter& w, const std::string& name);
+// `origin` nonzero: the Group's Matrix puts the model there.
+void openRootGroup(ByteWriter& w, const std::string& name, const Vec3d& origin = {0, 0, 0});
 void closeRootGroup(ByteWriter& w);
 
 // Clears `out` and `stats` (or a local one when null), runs `write(w, stats)` into `out` and

@@ -43,6 +43,7 @@ void scaleLengths(InstancedModel& model, double scale)
     for (PartPlacement& placement : model.placements)
         for (int row = 0; row < 3; ++row)
             placement.matrix[row][3] *= scale;
+    scalePoint(model.origin, scale);
     for (PlacementCluster& cluster : model.clusters) {
         scalePoint(cluster.center, scale);
         scaleLevels(cluster.proxies, scale);

@@ -4,6 +4,7 @@
 // level is one subgraph, shared.
 #include "cli_runner.h"
 #include "osg_assembly_probe.h"
+#include "osg_view_probe.h"
 
 #include "assembly/stretched_placements.h"
 #include "lod/nearest_point.h"
@@ -239,22 +240,40 @@ TEST(CliAssembly, StretchedPlacementsKeepEveryTriangleWhereItWas)
     EXPECT_EQ(scene.assembly.geometries[placements[1].geometry].name, "knob stretched");
 }
 
-// A model placed thousands of kilometres from the origin (site coordinates) cannot be placed
-// to the millimetre by 32-bit Matrix records: the conversion says so, on the terminal and in
-// the report, and says nothing for the same model at the origin.
-TEST(CliAssembly, PlacementsFarFromTheOriginAreWarnedOf)
+// Site coordinates: the assembly (lengths in mm) 5,000 km off, where a float is 0.5 m coarse. The file is
+// written about a local origin that its root Group's Matrix restores, so OSG puts every vertex
+// where it belongs, as near as it does for the assembly at the origin.
+TEST(CliAssembly, PlacementsFarFromTheOriginStandWhereTheyBelong)
 {
     const std::string dir = freshDirectory("assembly_far");
     const std::string input = writeAssembly(dir);
     write(dir + "/site.wrl", "#VRML V2.0 utf8\nTransform { translation 5e9 2e9 0 children Inline { url \"asm.wrl\" } }\n");
-    for (const std::string name : {"asm", "site"}) {
-        const CliRun run = runCadlod({"convert", dir + "/" + name + ".wrl", "-o", dir + "/" + name + ".flt", "--unit",
-                                      "mm", "-q", "--report", dir + "/" + name + ".json"});
-        ASSERT_EQ(run.exitCode, 0) << run.stderrText;
-        const nlohmann::json warnings = nlohmann::json::parse(readFile(dir + "/" + name + ".json")).at("warnings");
+    const auto convert = [&](const std::string& name, const std::string& hlod) {
+        const std::string out = dir + "/" + name + "_" + hlod;
+        const CliRun run = runCadlod({"convert", dir + "/" + name + ".wrl", "-o", out + ".flt", "--unit", "mm",
+                                      "--hlod", hlod, "--report", out + ".json"});
+        EXPECT_EQ(run.exitCode, 0) << run.stderrText;
+        const nlohmann::json report = nlohmann::json::parse(readFile(out + ".json"));
         const bool far = name == "site";
-        EXPECT_EQ(run.stderrText.find("0.5 meters apart") != std::string::npos, far) << run.stderrText;
-        EXPECT_EQ(warnings.dump().find("from the origin") != std::string::npos, far) << warnings.dump();
+        const std::string printed = run.stdoutText + run.stderrText;
+        EXPECT_EQ(printed.find("local origin") != std::string::npos, far) << printed;
+        EXPECT_EQ(report.contains("notes"), far) << report.dump();
+        const std::vector<double> origin = report.at("output").at("origin");  // in metres, near the site's
+        EXPECT_EQ(std::hypot(origin.at(0) - 5e6, origin.at(1) - 2e6, origin.at(2)) < 1, far);
+        EXPECT_EQ(origin == std::vector<double>(3, 0.0), !far);
+        const OsgViewProbe osg(out + ".flt", "");
+        EXPECT_TRUE(osg.loaded());
+        return osg.finestBounds();
+    };
+    for (const std::string hlod : {"auto", "off"}) {
+        const std::array<Point3, 2> near = convert("asm", hlod);
+        const std::array<Point3, 2> far = convert("site", hlod);
+        const double size = std::hypot(near[1][0] - near[0][0], near[1][1] - near[0][1], near[1][2] - near[0][2]);
+        ASSERT_GT(size, 0.1);
+        const Point3 offset{5e6, 2e6, 0};
+        for (int corner = 0; corner < 2; ++corner)
+            for (int a = 0; a < 3; ++a)
+                EXPECT_NEAR(far[corner][a] - offset[a], near[corner][a], 1e-5 * size) << hlod << " corner " << corner << " axis " << a;
     }
 }
 

@@ -453,10 +453,11 @@ TEST(CliHierarchicalLod, AFileOfOnePartHoldsTheBoundNearItAndIsOneDrawableFarOff
         EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9));
         EXPECT_GE(view.triangles, 1u);  // drawn from every eye
         const std::size_t i = std::size_t(&eye - &eyes.front());
-        if (i < 52)  // inside and walking: its chunks
+        if (i < 52) {  // inside and walking: its chunks
             EXPECT_GT(view.drawables, 1u);
-        else if (i >= 56)  // from 12 times the diagonal on: its own levels, both colours in one call
+        } else if (i >= 56) {  // from 12 times the diagonal on: its own levels, both colours in one call
             EXPECT_EQ(view.drawables, 1u);
+        }
     }
 
     const CliRun off = runCadlod({"convert", input, "-o", dir + "/one_node.flt", "--hlod", "off"});

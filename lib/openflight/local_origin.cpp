@@ -1,0 +1,131 @@
+#include "openflight/local_origin.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace cadlod::flt {
+namespace {
+
+// The spacing of 32-bit floats at x.
+double floatSpacing(double x)
+{
+    return x == 0 ? 0.0 : std::ldexp(1.0, std::ilogb(std::abs(x)) - (std::numeric_limits<float>::digits - 1));
+}
+
+// Stands off visibly when its coordinates are floats: spaced more than the share of `size`.
+bool standsOff(const Vec3d& p, double size)
+{
+    for (double c : p)
+        if (floatSpacing(c) > kVisiblePlacementSpacing * size)
+            return true;
+    return false;
+}
+
+// The nearest float to x, a number a Matrix record holds exactly.
+double asFloat(double x)
+{
+    const double spacing = floatSpacing(x);
+    return spacing == 0 ? x : std::round(x / spacing) * spacing;
+}
+
+Vec3d asFloats(const Vec3d& p) { return {asFloat(p[0]), asFloat(p[1]), asFloat(p[2])}; }
+
+void moveLevel(Level& level, const Vec3d& by)
+{
+    for (Part& part : level.parts)
+        for (Vec3d& p : part.positions)
+            for (int a = 0; a < 3; ++a)
+                p[a] += by[a];
+    for (int a = 0; a < 3; ++a)
+        level.center[a] += by[a];
+}
+
+void moveChunks(std::vector<std::vector<Level>>& chunks, const Vec3d& by)
+{
+    for (std::vector<Level>& chunk : chunks)
+        for (Level& level : chunk)
+            moveLevel(level, by);
+}
+
+Mat4d translation(const Vec3d& t)
+{
+    return {{{1, 0, 0, t[0]}, {0, 1, 0, t[1]}, {0, 0, 1, t[2]}, {0, 0, 0, 1}}};
+}
+
+// A part whose geometry lies far from its own frame's origin (shapes a file placed without a
+// Transform, in site coordinates) is moved to lie about it, and its placements move it back.
+bool centreOwnGeometry(InstancedModel& model, std::size_t d)
+{
+    PartDefinition& definition = model.definitions[d];
+    if (definition.levels.empty())
+        return false;
+    const Level& finest = definition.levels.front();
+    const Vec3d centre = asFloats(finest.center);
+    if (!standsOff(centre, 2.0 * finest.reachFrom(finest.center)))
+        return false;
+    const Vec3d back{-centre[0], -centre[1], -centre[2]};
+    for (Level& level : definition.levels)
+        moveLevel(level, back);
+    moveChunks(definition.chunks, back);
+    for (PartPlacement& p : model.placements)
+        if (p.definition == d)
+            p.matrix = multiply(p.matrix, translation(centre));
+    return true;
+}
+
+}  // namespace
+
+std::size_t moveToLocalOrigin(InstancedModel& model)
+{
+    std::size_t centred = 0;
+    for (std::size_t d = 0; d < model.definitions.size(); ++d)
+        centred += centreOwnGeometry(model, d);
+    const PlacementPrecision precision = placementPrecision(model);
+    if (precision.spacing <= kVisiblePlacementSpacing * precision.extent && centred == 0)
+        return 0;
+    // The model's own centre: its root cluster's, else its placements' mean.
+    Vec3d centre{0, 0, 0};
+    if (!model.clusters.empty()) {
+        centre = model.clusters.front().center;
+    } else if (!model.placements.empty()) {
+        for (const PartPlacement& p : model.placements)
+            for (int a = 0; a < 3; ++a)
+                centre[a] += p.matrix[a][3] / double(model.placements.size());
+    }
+    const Vec3d origin = asFloats(centre);
+    const Vec3d back{-origin[0], -origin[1], -origin[2]};
+    for (PartPlacement& p : model.placements)
+        p.matrix = multiply(translation(back), p.matrix);
+    for (PlacementCluster& cluster : model.clusters) {
+        for (int a = 0; a < 3; ++a)
+            cluster.center[a] += back[a];
+        for (Level& range : cluster.proxies)
+            for (int a = 0; a < 3; ++a)
+                range.center[a] += back[a];
+        cluster.move = multiply(translation(back), multiply(cluster.move, translation(origin)));
+    }
+    for (Level& shape : model.proxyShapes)
+        moveLevel(shape, back);
+    for (int a = 0; a < 3; ++a)
+        model.origin[a] += origin[a];
+    return centred;
+}
+
+std::string localOriginNote(const InstancedModel& model, std::size_t centred, const std::string& unitName)
+{
+    if (model.origin == Vec3d{0, 0, 0})
+        return {};
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "the model stands far from the origin, where OpenFlight's 32-bit numbers would place it only to "
+                  "%.3g %s: it is written about a local origin at (%.10g, %.10g, %.10g) %s, which its root Group's "
+                  "Matrix restores exactly; %zu %s moved to lie about %s own origin",
+                  floatSpacing(std::max({std::abs(model.origin[0]), std::abs(model.origin[1]), std::abs(model.origin[2])})),
+                  unitName.c_str(), model.origin[0], model.origin[1], model.origin[2], unitName.c_str(), centred,
+                  centred == 1 ? "part's geometry was" : "parts' geometry was", centred == 1 ? "its" : "their");
+    return text;
+}
+
+}  // namespace cadlod::flt
