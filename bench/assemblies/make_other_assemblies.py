@@ -12,7 +12,7 @@ on assemblies it has not seen (docs/benchmarks.md, "Assemblies of other kinds"):
   vrml1    a VRML 1.0 file: two parts DEF'd once, USE'd 400 times under Separators
   creo     Creo's way: 64 subassembly files placed by Inline, each placing part files by Inline
   tower    a shelf of 16 parts USE'd 60 times one above the other (tall and narrow)
-  geo      `pipes` in site coordinates, 5,080 km from the origin (convert warns of it)
+  geo      `pipes` in site coordinates, 5,080 km from the origin (written about a local origin)
 
 Units are KiCad's (0.1 inch): convert with --unit 0.1in. Deterministic.
 """
