@@ -4,7 +4,6 @@
 // level is one subgraph, shared.
 #include "cli_runner.h"
 #include "osg_assembly_probe.h"
-#include "osg_view_probe.h"
 
 #include "assembly/stretched_placements.h"
 #include "lod/nearest_point.h"
@@ -241,12 +240,12 @@ TEST(CliAssembly, StretchedPlacementsKeepEveryTriangleWhereItWas)
 }
 
 // Site coordinates: the assembly (lengths in mm) 5,000 km off, where a float is 0.5 m coarse. The file is
-// written about a local origin that its root Group's Matrix restores, so OSG puts every vertex
-// where it belongs, as near as it does for the assembly at the origin.
+// written about a local origin that its root Group's Matrix restores, so OSG puts every
+// placement where it belongs, as near as it does for the assembly at the origin.
 TEST(CliAssembly, PlacementsFarFromTheOriginStandWhereTheyBelong)
 {
     const std::string dir = freshDirectory("assembly_far");
-    const std::string input = writeAssembly(dir);
+    writeAssembly(dir);
     write(dir + "/site.wrl", "#VRML V2.0 utf8\nTransform { translation 5e9 2e9 0 children Inline { url \"asm.wrl\" } }\n");
     const auto convert = [&](const std::string& name, const std::string& hlod) {
         const std::string out = dir + "/" + name + "_" + hlod;
@@ -261,19 +260,25 @@ TEST(CliAssembly, PlacementsFarFromTheOriginStandWhereTheyBelong)
         const std::vector<double> origin = report.at("output").at("origin");  // in metres, near the site's
         EXPECT_EQ(std::hypot(origin.at(0) - 5e6, origin.at(1) - 2e6, origin.at(2)) < 1, far);
         EXPECT_EQ(origin == std::vector<double>(3, 0.0), !far);
-        const OsgViewProbe osg(out + ".flt", "");
-        EXPECT_TRUE(osg.loaded());
-        return osg.finestBounds();
+        const OsgAssemblyProbe osg = probeAssemblyWithOsg(out + ".flt", name + "_" + hlod);
+        EXPECT_TRUE(osg.loaded);
+        return osg.placements;
     };
     for (const std::string hlod : {"auto", "off"}) {
-        const std::array<Point3, 2> near = convert("asm", hlod);
-        const std::array<Point3, 2> far = convert("site", hlod);
-        const double size = std::hypot(near[1][0] - near[0][0], near[1][1] - near[0][1], near[1][2] - near[0][2]);
-        ASSERT_GT(size, 0.1);
-        const Point3 offset{5e6, 2e6, 0};
-        for (int corner = 0; corner < 2; ++corner)
-            for (int a = 0; a < 3; ++a)
-                EXPECT_NEAR(far[corner][a] - offset[a], near[corner][a], 1e-5 * size) << hlod << " corner " << corner << " axis " << a;
+        const std::map<std::string, OsgNamedNode> near = convert("asm", hlod);
+        const std::map<std::string, OsgNamedNode> far = convert("site", hlod);
+        ASSERT_EQ(near.size(), 15u) << hlod;
+        ASSERT_EQ(far.size(), near.size()) << hlod;
+        const std::array<double, 3> offset{5e6, 2e6, 0};
+        for (const auto& [name, placed] : near) {
+            ASSERT_EQ(far.count("asm/" + name), 1u) << name;  // the site's paths go through its Inline
+            const OsgNamedNode& moved = far.at("asm/" + name);
+            EXPECT_EQ(moved.triangles, placed.triangles) << name;
+            for (int a = 0; a < 3; ++a) {  // to a micrometre, where floats there are 0.5 m apart
+                EXPECT_NEAR(moved.min[a] - offset[a], placed.min[a], 1e-6) << hlod << " " << name << " axis " << a;
+                EXPECT_NEAR(moved.max[a] - offset[a], placed.max[a], 1e-6) << hlod << " " << name << " axis " << a;
+            }
+        }
     }
 }
 
