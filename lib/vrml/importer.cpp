@@ -1,5 +1,7 @@
 #include "vrml/importer.h"
 
+#include "vrml/coordinate_precision.h"
+
 #include "vrml/evaluation.h"
 #include "vrml/mapped_file.h"
 #include "vrml/parser.h"
@@ -216,6 +218,7 @@ public:
             return std::move(result_);
         }
         dropEmptyParts();
+        warnOfCoarseCoordinates(result_.scene, fileName);
         return std::move(result_);
     }
 
