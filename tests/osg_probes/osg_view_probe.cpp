@@ -221,49 +221,6 @@ public:
     std::size_t triangles = 0;
 };
 
-// The finest level's vertices through their frames' matrices, in double precision (OSG's
-// own bounds are floats, too coarse for a model far from the origin).
-class FinestBounds : public osg::NodeVisitor {
-public:
-    FinestBounds() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) { matrices_.push_back(osg::Matrixd::identity()); }
-    void apply(osg::Transform& t) override
-    {
-        osg::Matrixd local;
-        t.computeLocalToWorldMatrix(local, this);
-        matrices_.push_back(local * matrices_.back());
-        traverse(t);
-        matrices_.pop_back();
-    }
-    void apply(osg::LOD& lod) override
-    {
-        for (unsigned i = 0; i < lod.getNumChildren() && i < lod.getNumRanges(); ++i)
-            if (lod.getMinRange(i) <= 0 && lod.getMaxRange(i) > 0)
-                lod.getChild(i)->accept(*this);
-    }
-    void apply(osg::Geode& geode) override
-    {
-        for (unsigned i = 0; i < geode.getNumDrawables(); ++i)
-            if (const osg::Geometry* g = geode.getDrawable(i)->asGeometry())
-                if (const auto* v = dynamic_cast<const osg::Vec3Array*>(g->getVertexArray()))
-                    for (const osg::Vec3& p : *v)
-                        extend(osg::Vec3d(p) * matrices_.back());
-    }
-    std::array<Point3, 2> box{Point3{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
-                                     std::numeric_limits<double>::max()},
-                              Point3{-std::numeric_limits<double>::max(), -std::numeric_limits<double>::max(),
-                                     -std::numeric_limits<double>::max()}};
-
-private:
-    void extend(const osg::Vec3d& p)
-    {
-        for (int a = 0; a < 3; ++a) {
-            box[0][a] = std::min(box[0][a], p[a]);
-            box[1][a] = std::max(box[1][a], p[a]);
-        }
-    }
-    std::vector<osg::Matrixd> matrices_;
-};
-
 }  // namespace
 
 struct OsgViewProbe::Impl {
@@ -318,13 +275,6 @@ std::size_t OsgViewProbe::finestTriangles() const
     FinestCounter c;
     impl_->root->accept(c);
     return c.triangles;
-}
-
-std::array<Point3, 2> OsgViewProbe::finestBounds() const
-{
-    FinestBounds b;
-    impl_->root->accept(b);
-    return b.box;
 }
 
 std::array<Point3, 2> OsgViewProbe::bounds() const

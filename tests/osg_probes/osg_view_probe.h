@@ -37,8 +37,7 @@ public:
     OsgView drawFrom(const Point3& eye) const;
     std::vector<OsgLodRanges> lodNodes() const;
     std::array<Point3, 2> bounds() const;
-    std::size_t finestTriangles() const;
-    std::array<Point3, 2> finestBounds() const;  // of the finest level, in double precision  // every LOD node at its child drawn from up close
+    std::size_t finestTriangles() const;  // every LOD node at its child drawn from up close
     ~OsgViewProbe();
 
 private:
