@@ -14,14 +14,19 @@ double floatSpacing(double x)
     return x == 0 ? 0.0 : std::ldexp(1.0, std::ilogb(std::abs(x)) - (std::numeric_limits<float>::digits - 1));
 }
 
-// Stands off visibly when its coordinates are floats: spaced more than the share of `size`.
-bool standsOff(const Vec3d& p, double size)
+// Stands off visibly when its coordinates are floats: spaced more than `share` of `size`.
+bool standsOff(const Vec3d& p, double size, double share)
 {
     for (double c : p)
-        if (floatSpacing(c) > kVisiblePlacementSpacing * size)
+        if (floatSpacing(c) > share * size)
             return true;
     return false;
 }
+
+// A part's own vertices and LOD centre are seen against the part alone: rounded by less than
+// this share of its size, the part filling the screen is off by under a pixel. (Placements
+// are held to kVisiblePlacementSpacing of the whole model: gaps between parts show sooner.)
+constexpr double kVisibleVertexSpacing = 1e-3;
 
 // The nearest float to x, a number a Matrix record holds exactly.
 double asFloat(double x)
@@ -63,7 +68,7 @@ bool centreOwnGeometry(InstancedModel& model, std::size_t d)
         return false;
     const Level& finest = definition.levels.front();
     const Vec3d centre = asFloats(finest.center);
-    if (!standsOff(centre, 2.0 * finest.reachFrom(finest.center)))
+    if (!standsOff(centre, 2.0 * finest.reachFrom(finest.center), kVisibleVertexSpacing))
         return false;
     const Vec3d back{-centre[0], -centre[1], -centre[2]};
     for (Level& level : definition.levels)

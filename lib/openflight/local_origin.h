@@ -12,10 +12,10 @@
 namespace cadlod::flt {
 
 // Moves `model` about a local origin when its placements or its parts' geometry stand far
-// enough from the origin for floats to place them visibly off (placementPrecision, and the
-// same test for each part's geometry in its own frame), setting model.origin. Returns the
-// number of part definitions whose geometry was moved to lie about their own origin; a
-// model near the origin is left as it was (model.origin stays zero).
+// enough from the origin for floats to place them visibly off (placementPrecision; for each
+// part's geometry in its own frame, a thousandth of the part's size), setting model.origin.
+// Returns the number of part definitions whose geometry was moved to lie about their own
+// origin; a model near the origin is left as it was (model.origin stays zero).
 std::size_t moveToLocalOrigin(InstancedModel& model);
 
 // What the summary and the report say of a model moved about a local origin, `centred` parts'

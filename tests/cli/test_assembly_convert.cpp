@@ -282,6 +282,28 @@ TEST(CliAssembly, PlacementsFarFromTheOriginStandWhereTheyBelong)
     }
 }
 
+// A board of named parts that share nothing: each part's geometry stands where it is on the
+// board, far from its own origin for a part of a millimetre, yet near enough for floats to
+// hold it to a pixel's share. Nothing is moved, and no note says the model is far off.
+TEST(CliAssembly, SmallPartsAcrossABoardAreNotMovedAboutALocalOrigin)
+{
+    const std::string dir = freshDirectory("assembly_board_origin");
+    write(dir + "/board.wrl", "#VRML V2.0 utf8\n"
+                              "DEF BOARD Shape { geometry Box { size 400 300 2 } }\n"
+                              "DEF SCREW Transform { translation 190 140 2 children Shape { geometry Cylinder { "
+                              "radius 0.5 height 1 } } }\n"
+                              "DEF PIN Transform { translation -190 -140 2 children Shape { geometry Box { "
+                              "size 0.6 0.6 1 } } }\n");
+    const CliRun run = runCadlod({"convert", dir + "/board.wrl", "-o", dir + "/board.flt", "--unit", "mm", "--report",
+                                  dir + "/board.json"});
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/board.json"));
+    EXPECT_EQ(report.at("input").at("placements"), 3);
+    EXPECT_EQ(report.at("output").at("origin"), nlohmann::json::array({0.0, 0.0, 0.0}));
+    EXPECT_FALSE(report.contains("notes")) << report.dump();
+    EXPECT_EQ((run.stdoutText + run.stderrText).find("local origin"), std::string::npos);
+}
+
 TEST(CliAssembly, TooManyPlacementsFailWithoutOutput)
 {
     const std::string dir = freshDirectory("assembly_bomb");
