@@ -151,8 +151,8 @@ private:
     {
         const std::string& t = n.type;
         if (t == "Transform") s.world = s.world * transformMatrix(readTransformFields(n, "scaleFactor"));
-        else if (t == "MatrixTransform") s.world = s.world * matrixFromRowVectors(*orEmpty(floatsField(n, "matrix")));
-        else if (t == "Translation") s.world = s.world * Mat4::translation(vec3Field(n, "translation", {}));
+        else if (t == "MatrixTransform") s.world = s.world * matrixFromRowVectors(exactNumbersField(n, "matrix"));
+        else if (t == "Translation") s.world = s.world * Mat4::translation(exactVec3Field(n, "translation", {}));
         else if (t == "Scale") s.world = s.world * Mat4::scale(vec3Field(n, "scaleFactor", {1, 1, 1}));
         else if (t == "Rotation") {
             Vec3 axis{0, 0, 1};
@@ -179,12 +179,6 @@ private:
             return false;
         }
         return true;
-    }
-
-    static const std::vector<float>* orEmpty(const std::vector<float>* v)
-    {
-        static const std::vector<float> empty;
-        return v ? v : &empty;
     }
 
     // Material list as RGBA (diffuse + 1 - transparency), one entry per diffuse color.

@@ -24,6 +24,10 @@ struct FieldValue {
     enum class Kind { Empty, Floats, Ints, Strings, Words, Nodes, IsRef };
     Kind kind = Kind::Empty;
     std::shared_ptr<std::vector<float>> floats;
+    // Where a placement is written (the parser's keepsExactNumbers): the same numbers in
+    // double precision. A float holds a site coordinate only coarsely; a placement must hold
+    // it as written.
+    std::shared_ptr<std::vector<double>> exact;
     std::shared_ptr<std::vector<int32_t>> ints;
     std::vector<std::string> strings;  // Strings, Words (enums, TRUE/FALSE, bit mask parts), IsRef name
     std::vector<NodePtr> nodes;        // null entries for NULL

@@ -4,6 +4,8 @@
 #include "vrml/proto.h"
 
 #include <cctype>
+#include <charconv>
+#include <cmath>
 #include <climits>
 #include <limits>
 #include <string>
@@ -30,6 +32,26 @@ bool nonFiniteNumberWord(std::string_view w, float& value)
     else return false;
     if (negative) value = -value;
     return true;
+}
+
+// The fields that place geometry: Transform's translation and center, VRML 1.0's
+// Translation, Transform and MatrixTransform.
+bool keepsExactNumbers(std::string_view name)
+{
+    return name == "translation" || name == "center" || name == "matrix";
+}
+
+// A decimal number in double precision; `single` (the float it reads as) for forms only
+// the float reader knows (hexadecimal, out of range).
+double toDouble(std::string_view text, float single)
+{
+    if (!text.empty() && text.front() == '+')
+        text.remove_prefix(1);
+    double value = 0;
+    const auto r = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(value))
+        return single;
+    return value;
 }
 
 bool isInterfaceKeyword(std::string_view w)
@@ -304,6 +326,10 @@ private:
 
     void readNumbers(const std::string& name, FieldValue& v)
     {
+        if (keepsExactNumbers(name)) {
+            readExactNumbers(v);
+            return;
+        }
         if (isIndexField(name)) {
             if (!v.ints) v.ints = std::make_shared<std::vector<int32_t>>();
             v.kind = FieldValue::Kind::Ints;
@@ -314,6 +340,23 @@ private:
             lex_.readFloats(*v.floats);
         }
         if (lex_.peek().kind == TokenKind::Number) fail(lex_.peek(), "bad number");
+    }
+
+    // Each number as a float (as every other field reads it) and as a double.
+    void readExactNumbers(FieldValue& v)
+    {
+        if (!v.floats) v.floats = std::make_shared<std::vector<float>>();
+        if (!v.exact) v.exact = std::make_shared<std::vector<double>>(v.floats->begin(), v.floats->end());
+        v.kind = FieldValue::Kind::Floats;
+        while (lex_.peek().kind == TokenKind::Number) {
+            float single = 0;
+            if (!Lexer::toFloat(lex_.peek().text, single)) {
+                fail(lex_.peek(), "bad number");
+                return;
+            }
+            v.floats->push_back(single);
+            v.exact->push_back(toDouble(lex_.next().text, single));
+        }
     }
 
     bool readNonFiniteNumber(const std::string& name, const Token& w, FieldValue& v)

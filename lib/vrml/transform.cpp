@@ -113,6 +113,24 @@ Vec3 vec3Field(const Node& n, const char* name, Vec3 fallback)
     return {(*f)[0], (*f)[1], (*f)[2]};
 }
 
+Vec3 exactVec3Field(const Node& n, const char* name, Vec3 fallback)
+{
+    const FieldValue* v = n.field(name);
+    if (!v || v->kind != FieldValue::Kind::Floats || !v->exact || v->exact->size() < 3)
+        return vec3Field(n, name, fallback);
+    return {(*v->exact)[0], (*v->exact)[1], (*v->exact)[2]};
+}
+
+std::vector<double> exactNumbersField(const Node& n, const char* name)
+{
+    const FieldValue* v = n.field(name);
+    if (!v || v->kind != FieldValue::Kind::Floats)
+        return {};
+    if (v->exact)
+        return *v->exact;
+    return {v->floats->begin(), v->floats->end()};
+}
+
 float floatField(const Node& n, const char* name, float fallback)
 {
     const std::vector<float>* f = floatsField(n, name);
@@ -152,15 +170,15 @@ void rotationField(const Node& n, const char* name, Vec3& axis, double& angle)
 TransformFields readTransformFields(const Node& n, const char* scaleName)
 {
     TransformFields t;
-    t.translation = vec3Field(n, "translation", t.translation);
-    t.center = vec3Field(n, "center", t.center);
+    t.translation = exactVec3Field(n, "translation", t.translation);
+    t.center = exactVec3Field(n, "center", t.center);
     t.scale = vec3Field(n, scaleName, t.scale);
     rotationField(n, "rotation", t.rotationAxis, t.rotationAngle);
     rotationField(n, "scaleOrientation", t.scaleAxis, t.scaleAngle);
     return t;
 }
 
-Mat4 matrixFromRowVectors(const std::vector<float>& v)
+Mat4 matrixFromRowVectors(const std::vector<double>& v)
 {
     Mat4 r;
     if (v.size() < 16) return r;

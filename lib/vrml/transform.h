@@ -16,6 +16,9 @@ Mat4 transformMatrix(const TransformFields& t);
 
 // Field readers shared by both evaluators (missing or short fields give `fallback`).
 Vec3 vec3Field(const Node& n, const char* name, Vec3 fallback);
+// A field that places geometry, in double precision as written (FieldValue::exact).
+Vec3 exactVec3Field(const Node& n, const char* name, Vec3 fallback);
+std::vector<double> exactNumbersField(const Node& n, const char* name);
 float floatField(const Node& n, const char* name, float fallback);
 // SFInt32 read as a number; values outside the int32 range give `fallback`.
 int32_t intField(const Node& n, const char* name, int32_t fallback);
@@ -30,6 +33,6 @@ const std::vector<int32_t>* intsField(const Node& n, const char* name);
 TransformFields readTransformFields(const Node& n, const char* scaleName);
 
 // VRML 1.0 MatrixTransform: 16 numbers, row vectors (translation in the last row).
-Mat4 matrixFromRowVectors(const std::vector<float>& m);
+Mat4 matrixFromRowVectors(const std::vector<double>& m);
 
 }  // namespace cadlod::vrml

@@ -239,14 +239,15 @@ TEST(CliAssembly, StretchedPlacementsKeepEveryTriangleWhereItWas)
     EXPECT_EQ(scene.assembly.geometries[placements[1].geometry].name, "knob stretched");
 }
 
-// Site coordinates: the assembly (lengths in mm) 5,000 km off, where a float is 0.5 m coarse. The file is
+// Site coordinates: the assembly (lengths in mm) 5,000 km off, where a float is 0.5 m coarse,
+// at a translation no float holds. The reader keeps it in double precision, and the file is
 // written about a local origin that its root Group's Matrix restores, so OSG puts every
 // placement where it belongs, as near as it does for the assembly at the origin.
 TEST(CliAssembly, PlacementsFarFromTheOriginStandWhereTheyBelong)
 {
     const std::string dir = freshDirectory("assembly_far");
     writeAssembly(dir);
-    write(dir + "/site.wrl", "#VRML V2.0 utf8\nTransform { translation 5e9 2e9 0 children Inline { url \"asm.wrl\" } }\n");
+    write(dir + "/site.wrl", "#VRML V2.0 utf8\nTransform { translation 5080123456.7 2000000123.4 0 children Inline { url \"asm.wrl\" } }\n");
     const auto convert = [&](const std::string& name, const std::string& hlod) {
         const std::string out = dir + "/" + name + "_" + hlod;
         const CliRun run = runCadlod({"convert", dir + "/" + name + ".wrl", "-o", out + ".flt", "--unit", "mm",
@@ -258,7 +259,7 @@ TEST(CliAssembly, PlacementsFarFromTheOriginStandWhereTheyBelong)
         EXPECT_EQ(printed.find("local origin") != std::string::npos, far) << printed;
         EXPECT_EQ(report.contains("notes"), far) << report.dump();
         const std::vector<double> origin = report.at("output").at("origin");  // in metres, near the site's
-        EXPECT_EQ(std::hypot(origin.at(0) - 5e6, origin.at(1) - 2e6, origin.at(2)) < 1, far);
+        EXPECT_EQ(std::hypot(origin.at(0) - 5080123.4567, origin.at(1) - 2000000.1234, origin.at(2)) < 1, far);
         EXPECT_EQ(origin == std::vector<double>(3, 0.0), !far);
         const OsgAssemblyProbe osg = probeAssemblyWithOsg(out + ".flt", name + "_" + hlod);
         EXPECT_TRUE(osg.loaded);
@@ -269,7 +270,7 @@ TEST(CliAssembly, PlacementsFarFromTheOriginStandWhereTheyBelong)
         const std::map<std::string, OsgNamedNode> far = convert("site", hlod);
         ASSERT_EQ(near.size(), 15u) << hlod;
         ASSERT_EQ(far.size(), near.size()) << hlod;
-        const std::array<double, 3> offset{5e6, 2e6, 0};
+        const std::array<double, 3> offset{5080123.4567, 2000000.1234, 0};
         for (const auto& [name, placed] : near) {
             ASSERT_EQ(far.count("asm/" + name), 1u) << name;  // the site's paths go through its Inline
             const OsgNamedNode& moved = far.at("asm/" + name);

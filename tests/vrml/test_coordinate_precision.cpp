@@ -77,5 +77,40 @@ TEST(CoordinatePrecision, TheLimitIsAShareOfThePartsOwnSize)
     EXPECT_NE(coarseFinding(scene), nullptr);
 }
 
+// Placements hold their translations as written: a float would round 5080123.4567 to
+// 5080123.5. VRML97's Transform (translation; center, about which it scales twice) and
+// VRML 1.0's Translation and MatrixTransform alike.
+TEST(CoordinatePrecision, PlacementsKeepTheirTranslationsAsWritten)
+{
+    const std::string part = "DEF P Shape { geometry Box { size 1 1 1 } }";
+    const std::string uses = " Transform { translation 2 0 0 children USE P } ] }\n";
+    const std::string cube =
+        "  DEF P Separator { Cube { width 1 height 1 depth 1 } } Translation { translation 2 0 0 } USE P }\n";
+    const struct {
+        std::string text;
+        double x, y, z;  // the first placement's translation
+    } files[] = {
+        {"#VRML V2.0 utf8\nTransform { translation 5080123.4567 -2000000.1234 0.3 children [ " + part + uses,
+         5080123.4567, -2000000.1234, 0.3},
+        {"#VRML V2.0 utf8\nTransform { center 5080123.4567 -2000000.1234 0.3 scale 2 2 2 children [ " + part + uses,
+         -5080123.4567, 2000000.1234, -0.3},
+        {"#VRML V1.0 ascii\nSeparator { Translation { translation 5080123.4567 -2000000.1234 0.3 }\n" + cube,
+         5080123.4567, -2000000.1234, 0.3},
+        {"#VRML V1.0 ascii\nSeparator { MatrixTransform { matrix 1 0 0 0 0 1 0 0 0 0 1 0 "
+         "5080123.4567 -2000000.1234 0.3 1 }\n" + cube,
+         5080123.4567, -2000000.1234, 0.3}};
+    for (const auto& file : files) {
+        const ImportResult r = importAs(file.text, Instances::Keep);
+        std::vector<Placement> placed;
+        for (const Placement& p : flattenPlacements(r.scene.assembly, "site"))
+            if (!r.scene.assembly.geometries[p.geometry].parts.empty())
+                placed.push_back(p);
+        ASSERT_EQ(placed.size(), 2u) << file.text;
+        EXPECT_NEAR(placed[0].matrix.m[0][3], file.x, 1e-6) << file.text;
+        EXPECT_NEAR(placed[0].matrix.m[1][3], file.y, 1e-6) << file.text;
+        EXPECT_NEAR(placed[0].matrix.m[2][3], file.z, 1e-9) << file.text;
+    }
+}
+
 }  // namespace
 }  // namespace cadlod::vrml
