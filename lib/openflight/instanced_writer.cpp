@@ -1,5 +1,6 @@
 #include "openflight/instanced_writer.h"
 
+#include "mesh/float_spacing.h"
 #include "openflight/level_writer.h"
 
 #include <algorithm>
@@ -319,8 +320,7 @@ PlacementPrecision placementPrecision(const InstancedModel& model)
             farthest = std::max(farthest, std::abs(centre[k]));
         }
     }
-    if (farthest > 0)
-        out.spacing = std::ldexp(1.0, std::ilogb(farthest) - (std::numeric_limits<float>::digits - 1));
+    out.spacing = floatSpacing(farthest);
     for (int k = 0; k < 3; ++k)
         out.extent = std::max(out.extent, hi[k] - lo[k]);
     return out;

@@ -1,5 +1,7 @@
 #include "openflight/local_origin.h"
 
+#include "mesh/float_spacing.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -7,12 +9,6 @@
 
 namespace cadlod::flt {
 namespace {
-
-// The spacing of 32-bit floats at x.
-double floatSpacing(double x)
-{
-    return x == 0 ? 0.0 : std::ldexp(1.0, std::ilogb(std::abs(x)) - (std::numeric_limits<float>::digits - 1));
-}
 
 // Stands off visibly when its coordinates are floats: spaced more than `share` of `size`.
 bool standsOff(const Vec3d& p, double size, double share)

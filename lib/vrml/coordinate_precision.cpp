@@ -1,5 +1,7 @@
 #include "vrml/coordinate_precision.h"
 
+#include "mesh/float_spacing.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -8,11 +10,6 @@
 
 namespace cadlod::vrml {
 namespace {
-
-double floatSpacing(double x)
-{
-    return x == 0 ? 0.0 : std::ldexp(1.0, std::ilogb(std::abs(x)) - (std::numeric_limits<float>::digits - 1));
-}
 
 // The box of one CAD part's vertices (all its colours) and how far they reach from the origin.
 struct Extent {
