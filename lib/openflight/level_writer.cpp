@@ -58,7 +58,7 @@ void openRootGroup(ByteWriter& w, const std::string& name, const Vec3d& origin)
     writeGroup(w, name);
     writeLongIdIfNeeded(w, name);
     if (origin != Vec3d{0, 0, 0})
-        writeMatrix(w, {{{1, 0, 0, origin[0]}, {0, 1, 0, origin[1]}, {0, 0, 1, origin[2]}, {0, 0, 0, 1}}});
+        writeMatrix(w, translationMatrix(origin));
     writePush(w);
 }
 

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 
 namespace cadlod::flt {
 namespace {
@@ -33,14 +32,18 @@ double asFloat(double x)
 
 Vec3d asFloats(const Vec3d& p) { return {asFloat(p[0]), asFloat(p[1]), asFloat(p[2])}; }
 
+void shift(Vec3d& p, const Vec3d& by)
+{
+    for (int a = 0; a < 3; ++a)
+        p[a] += by[a];
+}
+
 void moveLevel(Level& level, const Vec3d& by)
 {
     for (Part& part : level.parts)
         for (Vec3d& p : part.positions)
-            for (int a = 0; a < 3; ++a)
-                p[a] += by[a];
-    for (int a = 0; a < 3; ++a)
-        level.center[a] += by[a];
+            shift(p, by);
+    shift(level.center, by);
 }
 
 void moveChunks(std::vector<std::vector<Level>>& chunks, const Vec3d& by)
@@ -50,39 +53,45 @@ void moveChunks(std::vector<std::vector<Level>>& chunks, const Vec3d& by)
             moveLevel(level, by);
 }
 
-Mat4d translation(const Vec3d& t)
+// Where a part's geometry lies far from its own frame's origin (shapes a file placed without
+// a Transform, in site coordinates): its centre, a translation a float holds; else zero.
+Vec3d ownGeometryOffset(const PartDefinition& definition)
 {
-    return {{{1, 0, 0, t[0]}, {0, 1, 0, t[1]}, {0, 0, 1, t[2]}, {0, 0, 0, 1}}};
-}
-
-// A part whose geometry lies far from its own frame's origin (shapes a file placed without a
-// Transform, in site coordinates) is moved to lie about it, and its placements move it back.
-bool centreOwnGeometry(InstancedModel& model, std::size_t d)
-{
-    PartDefinition& definition = model.definitions[d];
     if (definition.levels.empty())
-        return false;
+        return {0, 0, 0};
     const Level& finest = definition.levels.front();
     const Vec3d centre = asFloats(finest.center);
-    if (!standsOff(centre, 2.0 * finest.reachFrom(finest.center), kVisibleVertexSpacing))
-        return false;
-    const Vec3d back{-centre[0], -centre[1], -centre[2]};
-    for (Level& level : definition.levels)
-        moveLevel(level, back);
-    moveChunks(definition.chunks, back);
+    return standsOff(centre, 2.0 * finest.reachFrom(finest.center), kVisibleVertexSpacing) ? centre : Vec3d{0, 0, 0};
+}
+
+// Such parts are moved to lie about their own origin, and their placements move them back.
+// Returns how many were moved.
+std::size_t centreOwnGeometry(InstancedModel& model)
+{
+    std::vector<Vec3d> offsets;
+    std::size_t centred = 0;
+    for (PartDefinition& definition : model.definitions) {
+        const Vec3d offset = ownGeometryOffset(definition);
+        offsets.push_back(offset);
+        if (offset == Vec3d{0, 0, 0})
+            continue;
+        const Vec3d back{-offset[0], -offset[1], -offset[2]};
+        for (Level& level : definition.levels)
+            moveLevel(level, back);
+        moveChunks(definition.chunks, back);
+        ++centred;
+    }
     for (PartPlacement& p : model.placements)
-        if (p.definition == d)
-            p.matrix = multiply(p.matrix, translation(centre));
-    return true;
+        if (offsets[p.definition] != Vec3d{0, 0, 0})
+            p.matrix = multiply(p.matrix, translationMatrix(offsets[p.definition]));
+    return centred;
 }
 
 }  // namespace
 
 std::size_t moveToLocalOrigin(InstancedModel& model)
 {
-    std::size_t centred = 0;
-    for (std::size_t d = 0; d < model.definitions.size(); ++d)
-        centred += centreOwnGeometry(model, d);
+    const std::size_t centred = centreOwnGeometry(model);
     const PlacementPrecision precision = placementPrecision(model);
     if (precision.spacing <= kVisiblePlacementSpacing * precision.extent && centred == 0)
         return 0;
@@ -98,19 +107,16 @@ std::size_t moveToLocalOrigin(InstancedModel& model)
     const Vec3d origin = asFloats(centre);
     const Vec3d back{-origin[0], -origin[1], -origin[2]};
     for (PartPlacement& p : model.placements)
-        p.matrix = multiply(translation(back), p.matrix);
+        p.matrix = multiply(translationMatrix(back), p.matrix);
     for (PlacementCluster& cluster : model.clusters) {
-        for (int a = 0; a < 3; ++a)
-            cluster.center[a] += back[a];
+        shift(cluster.center, back);
         for (Level& range : cluster.proxies)
-            for (int a = 0; a < 3; ++a)
-                range.center[a] += back[a];
-        cluster.move = multiply(translation(back), multiply(cluster.move, translation(origin)));
+            shift(range.center, back);
+        cluster.move = multiply(translationMatrix(back), multiply(cluster.move, translationMatrix(origin)));
     }
     for (Level& shape : model.proxyShapes)
         moveLevel(shape, back);
-    for (int a = 0; a < 3; ++a)
-        model.origin[a] += origin[a];
+    shift(model.origin, origin);
     return centred;
 }
 

@@ -15,6 +15,11 @@ Mat4d multiply(const Mat4d& a, const Mat4d& b)
     return out;
 }
 
+Mat4d translationMatrix(const Vec3d& t)
+{
+    return {{{1, 0, 0, t[0]}, {0, 1, 0, t[1]}, {0, 0, 1, t[2]}, {0, 0, 0, 1}}};
+}
+
 Vec3d transformed(const Mat4d& m, const Vec3d& p)
 {
     Vec3d out{};

@@ -22,6 +22,7 @@ using Triangle = std::array<std::uint32_t, 3>;  // indices into the part's verte
 using Mat4d = std::array<std::array<double, 4>, 4>;  // [row][column], p' = M p
 
 Mat4d multiply(const Mat4d& a, const Mat4d& b);  // a b: b applied first
+Mat4d translationMatrix(const Vec3d& t);          // moves every point by t
 Vec3d transformed(const Mat4d& m, const Vec3d& p);  // the point p placed by m
 Mat4d inverse(const Mat4d& m);                   // an affine placement undone (its 3x3 part invertible)
 double determinant3(const Mat4d& m);             // of the 3x3 part: negative for a mirror

@@ -113,14 +113,6 @@ Vec3 vec3Field(const Node& n, const char* name, Vec3 fallback)
     return {(*f)[0], (*f)[1], (*f)[2]};
 }
 
-Vec3 exactVec3Field(const Node& n, const char* name, Vec3 fallback)
-{
-    const FieldValue* v = n.field(name);
-    if (!v || v->kind != FieldValue::Kind::Floats || !v->exact || v->exact->size() < 3)
-        return vec3Field(n, name, fallback);
-    return {(*v->exact)[0], (*v->exact)[1], (*v->exact)[2]};
-}
-
 std::vector<double> exactNumbersField(const Node& n, const char* name)
 {
     const FieldValue* v = n.field(name);
@@ -129,6 +121,13 @@ std::vector<double> exactNumbersField(const Node& n, const char* name)
     if (v->exact)
         return *v->exact;
     return {v->floats->begin(), v->floats->end()};
+}
+
+Vec3 exactVec3Field(const Node& n, const char* name, Vec3 fallback)
+{
+    const std::vector<double> f = exactNumbersField(n, name);
+    if (f.size() < 3) return fallback;
+    return {f[0], f[1], f[2]};
 }
 
 float floatField(const Node& n, const char* name, float fallback)
