@@ -383,7 +383,7 @@ private:
 
     const flt::Level& placedLevelAt(const flt::PartPlacement& p, double d) const
     {
-        return c_.model.definitions[p.definition].levels[levelIndexAt(p, d)];
+        return placedLevel(p, levelIndexAt(p, d));
     }
 
     // The level placement p shows at distance d from its centre.
@@ -397,16 +397,17 @@ private:
         return local < levels.front().switchIn ? 0 : levels.size() - 1;
     }
 
-    // What cluster n holds, each at its coarsest level within `allowance`.
+    // What cluster n holds, each piece as light as `allowance` lets it be: a child as the
+    // lightest of its candidates within the allowance, or as what it holds where that is
+    // lighter still (a merged candidate keeps every part whole; its children's simplified
+    // proxies may hold the same error in fewer triangles).
     void gather(std::size_t n, double allowance, MergedParts& merged, double& inputError) const
     {
         for (std::size_t p : nodes_[n].items)
-            addPlacement(c_.model.placements[p], allowance, merged, inputError);
+            addPlacedLevel(c_.model.placements[p], coarsestWithin(c_.model.placements[p], allowance), merged,
+                           inputError);
         for (std::size_t child : nodes_[n].children) {
-            const Candidate* best = nullptr;
-            for (const Candidate& candidate : candidatesOf(child))
-                if (candidate.error <= allowance)
-                    best = &candidate;
+            const Candidate* best = lightestInput(child, allowance).first;
             if (!best) {
                 gather(child, allowance, merged, inputError);
                 continue;
@@ -416,7 +417,25 @@ private:
         }
     }
 
-    void addPlacement(const flt::PartPlacement& p, double allowance, MergedParts& merged, double& inputError) const
+    // The lightest way cluster n enters a proxy's input within `allowance`: one of its
+    // candidates, or (null) what it holds, each piece so; and its triangles.
+    std::pair<const Candidate*, std::size_t> lightestInput(std::size_t n, double allowance) const
+    {
+        std::size_t held = 0;
+        for (std::size_t p : nodes_[n].items)
+            held += placedLevel(c_.model.placements[p], coarsestWithin(c_.model.placements[p], allowance))
+                        .triangleCount();
+        for (std::size_t child : nodes_[n].children)
+            held += lightestInput(child, allowance).second;
+        std::pair<const Candidate*, std::size_t> lightest{nullptr, held};
+        for (const Candidate& candidate : candidatesOf(n))
+            if (candidate.error <= allowance && candidate.level.triangleCount() < lightest.second)
+                lightest = {&candidate, candidate.level.triangleCount()};
+        return lightest;
+    }
+
+    // Placement p's coarsest level whose measured error, placed, is within `allowance`.
+    std::size_t coarsestWithin(const flt::PartPlacement& p, double allowance) const
     {
         const std::vector<flt::Level>& levels = c_.model.definitions[p.definition].levels;
         const std::vector<LodLevel>& measured = c_.parts[p.definition].result.levels;
@@ -425,7 +444,12 @@ private:
         for (std::size_t k = 1; k < levels.size() && k < measured.size(); ++k)
             if (scale * measured[k].hausdorffMax <= allowance)
                 best = k;
-        addPlacedLevel(p, best, merged, inputError);
+        return best;
+    }
+
+    const flt::Level& placedLevel(const flt::PartPlacement& p, std::size_t k) const
+    {
+        return c_.model.definitions[p.definition].levels[k];
     }
 
     // Level k of placement p into `sink` (MergedParts or LevelMerger), `error` raised to its.

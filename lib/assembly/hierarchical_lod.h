@@ -8,10 +8,10 @@
 // A cluster that is another's copy moved (the same parts, turned alike, at the same places
 // about it: a repeated rack of boards) gets that cluster's proxies moved, not made again.
 //
-// A proxy is made bottom-up from what the cluster holds, each at its coarsest level (part
-// level or child proxy) whose error is at most the error the proxy may show where it is
-// first drawn (kProxyInputShare); its error is that input's plus its own measured against
-// the input (the triangle inequality of the Hausdorff distance). A proxy is kept where it
+// A proxy is made bottom-up from what the cluster holds, each piece in its lightest form
+// (part level, child proxy, or what the child holds) whose error is at most the error the
+// proxy may show where it is first drawn (kProxyInputShare); its error is that input's plus
+// its own measured against the input (the triangle inequality of the Hausdorff distance). A proxy is kept where it
 // costs less to draw than what it replaces; its ranges are then set top-down: a proxy only
 // the parent's proxy would hide is left out.
 #pragma once

@@ -708,4 +708,38 @@ TEST(CliHierarchicalLod, EveryMergedProxyIsWithinItsErrorOfThePartsItReplaces)
     EXPECT_GE(mergedAgain, 8u);
 }
 
+// A simplified proxy takes each piece in its lightest form within what it may show: a child
+// whose merged proxy keeps its parts at levels chosen for a nearer eye enters as its own
+// pieces where those are lighter. The root of the grid is its one simplified cluster (128
+// placements; its children, 64 each, are merged only), so its input is never heavier than
+// every part at the coarsest level within the root proxy's allowance.
+TEST(CliHierarchicalLod, ASimplifiedProxyTakesEachPieceInItsLightestForm)
+{
+    AssemblyConversion c = convertGrid(freshDirectory("hlod_lightest_input"));
+    Box3 box;
+    for (const flt::PartPlacement& p : c.model.placements)
+        for (const flt::Part& part : placedLevel(c.model, p).parts)
+            for (const Vec3d& v : part.positions)
+                box.add(v);
+    HierarchyOptions options;
+    options.tree = kFewestCallsTree;
+    options.fewestCalls = true;
+    const HierarchyStats stats = buildHierarchy(c, options, PartWelding{}, chainFrom);
+    const double radius = box.halfDiagonal();
+    const double allowance =
+        kProxyInputShare * detail::errorBudgetAt(switchAtNearestPoint(0.0, radius) - radius, options.view);
+    std::size_t coarsest = 0;
+    for (const flt::PartPlacement& p : c.model.placements) {
+        const std::vector<flt::Level>& levels = c.model.definitions[p.definition].levels;
+        const std::vector<LodLevel>& measured = c.parts[p.definition].result.levels;
+        std::size_t best = 0;
+        for (std::size_t k = 1; k < levels.size() && k < measured.size(); ++k)
+            if (flt::largestScale(p.matrix) * measured[k].hausdorffMax <= allowance)
+                best = k;
+        coarsest += levels[best].triangleCount();
+    }
+    ASSERT_GT(stats.inputTriangles, 0u);
+    EXPECT_LE(stats.inputTriangles, coarsest);
+}
+
 }  // namespace cadlod::test
