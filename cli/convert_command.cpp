@@ -66,14 +66,26 @@ ViewParams viewOf(const ConvertArgs& a)
     return v;
 }
 
-// --hlod auto: the placements in clusters with merged proxies, when the chain plans the
-// levels (a level list has no error to switch a proxy by) and there are parts to cluster.
+// --hlod auto, instances or calls: the placements in clusters with merged proxies, when the
+// chain plans the levels (a level list has no error to switch a proxy by) and there are parts
+// to cluster.
 bool hierarchical(const ConvertArgs& a) { return a.hlod != "off" && a.lod == "auto"; }
 
-// --hlod calls: small clusters drawn as their parts merged (HierarchyOptions::fewestCalls).
-ClusterTreeOptions clusterTree(const ConvertArgs& a)
+// What --hlod comes to for a model of `placements`: instances or the fewest draw calls
+// (assembly/hierarchical_lod.h, ClusterMode).
+ClusterMode clusterMode(const ConvertArgs& a, std::size_t placements)
 {
-    ClusterTreeOptions tree = a.hlod == "calls" ? kFewestCallsTree : ClusterTreeOptions{};
+    const ClusterMode asked = a.hlod == "calls"       ? ClusterMode::FewestCalls
+                              : a.hlod == "instances" ? ClusterMode::Instances
+                                                      : ClusterMode::Auto;
+    return resolvedMode(asked, placements);
+}
+
+const char* clusterModeName(ClusterMode mode) { return mode == ClusterMode::FewestCalls ? "calls" : "instances"; }
+
+ClusterTreeOptions clusterTree(const ConvertArgs& a, std::size_t placements)
+{
+    ClusterTreeOptions tree = hierarchyOptionsOf(clusterMode(a, placements)).tree;
     if (a.clusterParts > 0)
         tree.leafItems = a.clusterParts;
     if (a.clusterFanout > 0)
@@ -132,9 +144,9 @@ nlohmann::json optionsJson(const ConvertArgs& a, const LoadedMesh& loaded)
     return {{"lod", a.lod},
             {"instances", a.instances},
             {"hlod", a.hlod},
-            {"clusterParts", clusterTree(a).leafItems},
-            {"clusterFanout", clusterTree(a).fanout},
-            {"clusterLargeShare", clusterTree(a).largeShare},
+            {"clusterParts", clusterTree(a, loaded.placements).leafItems},
+            {"clusterFanout", clusterTree(a, loaded.placements).fanout},
+            {"clusterLargeShare", clusterTree(a, loaded.placements).largeShare},
             {"pixelError", a.pixelError},
             {"fovY", a.fov},
             {"viewport", a.viewport},
@@ -292,19 +304,20 @@ HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, co
 {
     if (!hierarchical(a))
         return {};
-    HierarchyOptions options;
-    options.tree = clusterTree(a);
+    const std::size_t placements = c.model.placements.size();
+    HierarchyOptions options = hierarchyOptionsOf(clusterMode(a, placements));
+    options.tree = clusterTree(a, placements);
     options.view = viewOf(a);
-    options.fewestCalls = a.hlod == "calls";
     const auto chain = [&](CoreMesh& merged, LevelStore& store, const ProxyRange& range, vcg::CallBackPos* progress) {
         return buildLevels(a, lengthScale, merged, store, progress, range);
     };
     return buildHierarchy(c, options, weldingOf(importing), chain, barSpans());
 }
 
-nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
+nlohmann::json hierarchyJson(const ConvertArgs& a, std::size_t placements, const HierarchyStats& h)
 {
     return {{"mode", a.hlod},
+            {"tree", clusterModeName(clusterMode(a, placements))},
             {"clusters", h.clusters},
             {"withProxies", h.proxied},
             {"proxyLevels", h.proxyLevels},
@@ -314,9 +327,9 @@ nlohmann::json hierarchyJson(const ConvertArgs& a, const HierarchyStats& h)
             {"copiedClusters", h.copied},
             {"turnedCopies", h.turned},
             {"mirroredCopies", h.mirrored},
-            {"clusterParts", clusterTree(a).leafItems},
-            {"fanout", clusterTree(a).fanout},
-            {"largeShare", clusterTree(a).largeShare}};
+            {"clusterParts", clusterTree(a, placements).leafItems},
+            {"fanout", clusterTree(a, placements).fanout},
+            {"largeShare", clusterTree(a, placements).largeShare}};
 }
 
 // What the hierarchy is for a model of one placed part: its held levels, and its chunks.
@@ -331,6 +344,18 @@ void printOnePlacementSummary(const ConvertArgs& a, const AssemblyConversion& c)
     std::fputc('\n', stderr);
 }
 
+// What --hlod auto chose, and why ("" for a mode asked by name).
+std::string autoChoice(const ConvertArgs& a, std::size_t placements)
+{
+    if (a.hlod != "auto")
+        return {};
+    const std::string count = std::to_string(placements) + " placements";
+    if (clusterMode(a, placements) == ClusterMode::FewestCalls)
+        return " (fewest draw calls: " + count + ", more than the " + std::to_string(kDrawCallBudget) +
+               " draw calls a frame may spend)";
+    return " (instances near the viewer: " + count + ")";
+}
+
 void printHierarchySummary(const ConvertArgs& a, const AssemblyConversion& c, const HierarchyStats& h)
 {
     if (h.clusters == 0 && hierarchical(a) && c.model.placements.size() == 1) {
@@ -342,12 +367,14 @@ void printHierarchySummary(const ConvertArgs& a, const AssemblyConversion& c, co
                      a.hlod != "off" ? " (a level list has no errors)" : "");
         return;
     }
+    const std::size_t placements = c.model.placements.size();
+    const ClusterTreeOptions tree = clusterTree(a, placements);
     std::fprintf(stderr,
-                 "cadlod: hlod %s: %zu clusters of up to %zu placements (%zu per node%s), %zu with proxies: %zu "
+                 "cadlod: hlod %s%s: %zu clusters of up to %zu placements (%zu per node%s), %zu with proxies: %zu "
                  "proxy levels drawing %zu meshes of %zu triangles, merged from %zu; %zu clusters copies of others "
                  "(%zu turned, %zu mirrored), drawing their meshes moved\n",
-                 a.hlod.c_str(), h.clusters, clusterTree(a).leafItems, clusterTree(a).fanout,
-                 clusterTree(a).largeShare > 0 ? ", the largest above" : "", h.proxied,
+                 a.hlod.c_str(), autoChoice(a, placements).c_str(), h.clusters, tree.leafItems, tree.fanout,
+                 tree.largeShare > 0 ? ", the largest above" : "", h.proxied,
                  h.proxyLevels, h.proxyShapes, h.proxyTriangles, h.inputTriangles, h.copied, h.turned, h.mirrored);
 }
 
@@ -396,7 +423,7 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
         outputs.write(a.report, [&](const std::string& temporary) {
             nlohmann::json report = assemblyReportJson(a, c, written, imported, importSeconds, lodSeconds,
                                                        writeSeconds, secondsSince(t0));
-            report["hlod"] = hierarchyJson(a, hierarchy);
+            report["hlod"] = hierarchyJson(a, c.model.placements.size(), hierarchy);
             report["output"]["origin"] = c.model.origin;
             if (!originNote.empty())
                 report["notes"] = {originNote};
@@ -543,16 +570,17 @@ void addConvertCommand(CLI::App& app)
         ->capture_default_str();
     cmd->add_option("--hlod", args->hlod,
                     "auto: the placements of an assembly in clusters of nearby parts, each drawn far off as one "
-                    "merged, simplified proxy (switch distances held at every node's nearest point); calls: the "
-                    "fewest draw calls near the viewer, small clusters drawn as their parts merged (files about "
-                    "4x larger); off: one LOD node per part")
-        ->check(CLI::IsMember({"auto", "calls", "off"}))
+                    "merged, simplified proxy (switch distances held at every node's nearest point), as calls "
+                    "above 400 placements, as instances up to that; instances: every part its own instance near "
+                    "the viewer, clusters of 48; calls: the fewest draw calls near the viewer, small clusters "
+                    "drawn as their parts merged (files about 4x larger); off: one LOD node per part")
+        ->check(CLI::IsMember({"auto", "instances", "calls", "off"}))
         ->capture_default_str();
     cmd->add_option("--cluster-parts", args->clusterParts,
-                    "hlod: at most this many placements in a leaf cluster [default: 48, calls: 2]")
+                    "hlod: at most this many placements in a leaf cluster [instances: 48, calls: 2]")
         ->check(CLI::PositiveNumber);
     cmd->add_option("--cluster-fanout", args->clusterFanout,
-                    "hlod: at most this many nodes below a cluster [default: 8, calls: 2]")
+                    "hlod: at most this many nodes below a cluster [instances: 8, calls: 2]")
         ->check(CLI::Range(2, 64));
     cmd->add_flag("--from-original", args->fromOriginal, "List: simplify every level from the original");
     cmd->add_option("--samples", args->samples, "Hausdorff samples per side (0: automatic)");

@@ -56,10 +56,11 @@ struct Converted {
     HierarchyStats hierarchy;
     double lengthScale = 1.0;
     std::size_t centredParts = 0;  // parts whose geometry was moved about its own origin (local_origin.h)
+    ClusterMode mode = ClusterMode::Instances;  // what the mode asked came to (resolvedMode)
 };
 
 // The assembly of `source`, its placements in clusters with proxies; throws with the reason.
-Converted convert(const VrmlSource& source, const LodChainOptions& chain, bool fewestCalls,
+Converted convert(const VrmlSource& source, const LodChainOptions& chain, ClusterMode mode,
                   const std::string& name, CallbackSpans& progress)
 {
     vrml::ImportResult imported = vrml::importVrmlFile(source.path, importOptions(source));
@@ -90,11 +91,9 @@ Converted convert(const VrmlSource& source, const LodChainOptions& chain, bool f
             [&](CoreMesh& m, LevelStore& store, vcg::CallBackPos* step) { return build(m, store, {}, step); }, true,
             spans);
     }
-    HierarchyOptions hierarchy;
+    out.mode = resolvedMode(mode, out.conversion.model.placements.size());
+    HierarchyOptions hierarchy = hierarchyOptionsOf(out.mode);
     hierarchy.view = chain.view;
-    hierarchy.fewestCalls = fewestCalls;
-    if (fewestCalls)
-        hierarchy.tree = kFewestCallsTree;
     {
         ProgressSpan proxies(spans, partsEnd, kWritingStart);
         out.hierarchy = buildHierarchy(out.conversion, hierarchy, welding, build, spans);
@@ -104,16 +103,21 @@ Converted convert(const VrmlSource& source, const LodChainOptions& chain, bool f
     return out;
 }
 
-void logConversion(MeshFilterInterface& plugin, const Converted& c, const ClusterTreeOptions& tree,
-                   const QString& output, const flt::InstancedWriteStats& written, double seconds)
+void logConversion(MeshFilterInterface& plugin, const Converted& c, const QString& output,
+                   const flt::InstancedWriteStats& written, double seconds)
 {
     const std::size_t placements = c.conversion.model.placements.size();
+    const ClusterTreeOptions tree = hierarchyOptionsOf(c.mode).tree;
     plugin.Log("CAD LOD set, per part and cluster: %zu distinct parts in %zu placements, each part's chain once; "
+               "%s; "
                "%zu clusters of up to %zu placements (%zu per node%s), %zu with proxies: %zu proxy levels drawing %zu "
                "meshes of %zu triangles, merged from %zu; %zu clusters copies of others (%zu turned, %zu mirrored), "
                "drawing their "
                "meshes moved",
-               c.conversion.parts.size(), placements, c.hierarchy.clusters, tree.leafItems, tree.fanout,
+               c.conversion.parts.size(), placements,
+               c.mode == ClusterMode::FewestCalls ? "the fewest draw calls near the viewer"
+                                                  : "every part its own instance near the viewer",
+               c.hierarchy.clusters, tree.leafItems, tree.fanout,
                tree.largeShare > 0 ? ", the largest above" : "", c.hierarchy.proxied, c.hierarchy.proxyLevels,
                c.hierarchy.proxyShapes, c.hierarchy.proxyTriangles, c.hierarchy.inputTriangles, c.hierarchy.copied, c.hierarchy.turned,
                c.hierarchy.mirrored);
@@ -143,7 +147,7 @@ QString defaultHierarchyFile(const MeshModel& layer)
 }
 
 bool writeHierarchicalLod(MeshFilterInterface& plugin, MeshModel& layer, const LodChainOptions& chain,
-                          bool fewestCalls, const QString& chosen, vcg::CallBackPos* cb, QString& error)
+                          ClusterMode mode, const QString& chosen, vcg::CallBackPos* cb, QString& error)
 {
     const QString output = chosen.isEmpty() ? defaultHierarchyFile(layer) : chosen;
     VrmlSource source;
@@ -159,7 +163,7 @@ bool writeHierarchicalLod(MeshFilterInterface& plugin, MeshModel& layer, const L
     timer.start();
     CallbackSpans progress(cb);
     try {
-        const Converted c = convert(source, chain, fewestCalls, modelName(output), progress);
+        const Converted c = convert(source, chain, mode, modelName(output), progress);
         flt::InstancedWriteStats written;
         std::string why;
         const ProgressSpans spans = progress.spans();
@@ -169,8 +173,7 @@ bool writeHierarchicalLod(MeshFilterInterface& plugin, MeshModel& layer, const L
             error = QString::fromStdString(why);
             return false;
         }
-        logConversion(plugin, c, fewestCalls ? kFewestCallsTree : ClusterTreeOptions{}, output, written,
-                      timer.elapsed() / 1000.0);
+        logConversion(plugin, c, output, written, timer.elapsed() / 1000.0);
     } catch (const std::exception& e) {
         error = QString::fromStdString(e.what());
         return false;

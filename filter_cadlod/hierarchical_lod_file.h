@@ -7,6 +7,7 @@
 // document is left as it was.
 #pragma once
 
+#include "assembly/hierarchical_lod.h"  // ClusterMode
 #include "lod/lod_chain.h"
 
 #include <common/interfaces.h>
@@ -18,11 +19,11 @@ namespace cadlod {
 QString defaultHierarchyFile(const MeshModel& layer);
 
 // Writes the hierarchical LOD of `layer`'s assembly to `output` (empty: the default file),
-// the chain planned by `chain`; `fewestCalls` as `--hlod calls` (assembly/hierarchical_lod.h,
-// HierarchyOptions). False with `error` (the file and what went wrong) when the
+// the chain planned by `chain`, the placements clustered as `mode` says (assembly/
+// hierarchical_lod.h; Auto as `--hlod auto`). False with `error` (the file and what went wrong) when the
 // layer was not read from VRML, the output is not a .flt file, or the conversion fails;
 // nothing is written then.
 bool writeHierarchicalLod(MeshFilterInterface& plugin, MeshModel& layer, const LodChainOptions& chain,
-                          bool fewestCalls, const QString& chosen, vcg::CallBackPos* cb, QString& error);
+                          ClusterMode mode, const QString& chosen, vcg::CallBackPos* cb, QString& error);
 
 }  // namespace cadlod

@@ -36,6 +36,19 @@ bool perPartAndCluster(const RichParameterList& par)
     return par.hasParameter("hierarchy") && par.getEnum("hierarchy") >= 1;
 }
 
+// Hierarchy 1 is `--hlod auto`, 2 `calls`, 3 `instances`.
+ClusterMode clusterMode(const RichParameterList& par)
+{
+    switch (par.getEnum("hierarchy")) {
+    case 2:
+        return ClusterMode::FewestCalls;
+    case 3:
+        return ClusterMode::Instances;
+    default:
+        return ClusterMode::Auto;
+    }
+}
+
 ViewParams readView(const RichParameterList& par)
 {
     ViewParams v;
@@ -179,7 +192,8 @@ void lodSetParameters(MeshModel& m, RichParameterList& par)
     addFeatureParameters(par);
     par.addParam(RichEnum("hierarchy", 0,
                           {"One LOD node: the levels as layers", "Per part and cluster: to a file",
-                           "Per part and cluster, fewest draw calls: to a file"},
+                           "Per part and cluster, fewest draw calls: to a file",
+                           "Per part and cluster, instances near the viewer: to a file"},
                           "Hierarchy",
                           "Per part and cluster (VRML assemblies, seen from inside): writes the HLOD file."));
     par.addParam(RichSaveFile("hierarchyFile", defaultHierarchyFile(m), ".flt", "HLOD file",
@@ -200,8 +214,7 @@ bool generateLodSet(MeshFilterInterface& plugin, MeshDocument& md, const RichPar
                     "a proxy by";
             return false;
         }
-        const bool fewestCalls = par.getEnum("hierarchy") == 2;
-        return writeHierarchicalLod(plugin, original, readChainOptions(par), fewestCalls,
+        return writeHierarchicalLod(plugin, original, readChainOptions(par), clusterMode(par),
                                     par.getSaveFileName("hierarchyFile"), cb, error);
     }
     const int setId = nextSetId(md);

@@ -3,8 +3,9 @@
 #   bench/assemblies/hlod.sh BUILD_DIR WORK_DIR [ASSEMBLY...]   (default: demo cabinet_q cabinet plant hall yard yard_close line)
 # For each assembly (the bundled demo, or one made by make_assemblies.py or, for unique scaled
 # pipes vrml1 creo tower geo inline_once, make_other_assemblies.py into WORK_DIR), in one
-# run: --hlod auto (the default), --hlod off (a node per placement), --hlod calls (the fewest
-# draw calls; not on the plant, the hall, the yards or make_other_assemblies.py's, whose merged files would be several GB) and, for the demo and
+# run: --hlod auto (the default: the fewest draw calls above 400 placements, instances up to
+# that), --hlod off (a node per placement), the mode auto did not choose (--hlod instances or
+# --hlod calls; on make_other_assemblies.py's, only where auto chose calls) and, for the demo and
 # cabinet_q, --instances expand (one node for the whole model: the chain of the per-cluster
 # estimate). Prints build time and peak memory, then bench/view_error's worst error on
 # screen, triangles, drawables and, where the expanded chain exists, the ratio to the
@@ -27,9 +28,15 @@ unit_of() { [ "$1" = demo ] && echo mm || echo 0.1in; }
 
 printf "%-10s %-7s %8s %8s\n" assembly run seconds peak_MB
 for a in "${ASSEMBLIES[@]}"; do
-  runs=(auto off); case "$a" in plant|hall|yard|yard_close) ;; *) [[ "$OTHER" == *" $a "* ]] || runs+=(calls) ;; esac
-  { [ "$a" = demo ] || [ "$a" = cabinet_q ]; } && runs+=(expand)
+  runs=(auto off other); { [ "$a" = demo ] || [ "$a" = cabinet_q ]; } && runs+=(expand)
+  ran=()
   for r in "${runs[@]}"; do
+    if [ "$r" = other ]; then  # the tree auto did not choose
+      tree=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["hlod"]["tree"])' "$WORK/hlod/$a.auto.json")
+      if [ "$tree" = calls ]; then r=instances; else r=calls; fi
+      [ "$r" = calls ] && [[ "$OTHER" == *" $a "* ]] && continue
+    fi
+    ran+=("$r")
     out="$WORK/hlod/$a.$r"
     if [ "$r" = expand ]; then args=(--instances expand); else args=(--hlod "$r"); fi
     /usr/bin/time -f "%e %M" -o "$out.time" "$CADLOD" convert "$(input_of "$a")" -o "$out.flt" \
@@ -38,6 +45,6 @@ for a in "${ASSEMBLIES[@]}"; do
     printf "%-10s %-7s %8.1f %8d\n" "$a" "$r" "$s" $((kb / 1024))
   done
   estimate=(); [ -f "$WORK/hlod/$a.expand.flt" ] && estimate=(--estimate "$WORK/hlod/$a.expand.flt")
-  files=(); for r in "${runs[@]}"; do files+=("$WORK/hlod/$a.$r.flt"); done
+  files=(); for r in "${ran[@]}"; do files+=("$WORK/hlod/$a.$r.flt"); done
   "$VIEW" "${estimate[@]}" --walk-csv "$WORK/hlod/$a.walk.csv" "${files[@]}" | sed "s|$WORK/hlod/||"
 done

@@ -53,6 +53,25 @@ struct HierarchyOptions {
     bool fewestCalls = false;
 };
 
+// How the placements are clustered (`--hlod`; the LOD-set filter's Hierarchy). Instances: leaves
+// of ClusterTreeOptions{} placements, every part its own instance near the viewer. FewestCalls:
+// kFewestCallsTree and HierarchyOptions::fewestCalls. Auto: the fewest draw calls for an
+// assembly of more placements than kDrawCallBudget, instances for a smaller one.
+enum class ClusterMode { Auto, Instances, FewestCalls };
+
+// The draw calls a frame may spend on the model. An assembly of more placements would show a
+// viewer inside it more instances than that near the eye, one draw call each; of fewer, it
+// never can, and keeps the instance tree's smaller file.
+inline constexpr std::size_t kDrawCallBudget = 400;
+
+// What `mode` comes to for a model of `placements`: Instances or FewestCalls.
+inline ClusterMode resolvedMode(ClusterMode mode, std::size_t placements)
+{
+    if (mode != ClusterMode::Auto)
+        return mode;
+    return placements > kDrawCallBudget ? ClusterMode::FewestCalls : ClusterMode::Instances;
+}
+
 // With fewestCalls, the fewest placements a cluster holds to get simplified proxies too.
 inline constexpr std::size_t kSimplifiedClusterPlacements = 48;
 
@@ -70,6 +89,16 @@ inline constexpr double kMergedCandidateStep = 1.5;
 // placement more than half as large as its group kept above the split, so that clusters are
 // small wherever the viewer is.
 inline constexpr ClusterTreeOptions kFewestCallsTree{2, 2, 0.5};
+
+// The tree and fewestCalls of `resolved` (resolvedMode), the view left as it is.
+inline HierarchyOptions hierarchyOptionsOf(ClusterMode resolved)
+{
+    HierarchyOptions options;
+    options.fewestCalls = resolved == ClusterMode::FewestCalls;
+    if (options.fewestCalls)
+        options.tree = kFewestCallsTree;
+    return options;
+}
 
 // Of the error a proxy may show where it is first drawn, the share its input may use. All
 // of it: the input is then what the cluster's pieces show there anyway, merged, and the

@@ -708,6 +708,49 @@ TEST(CliHierarchicalLod, EveryMergedProxyIsWithinItsErrorOfThePartsItReplaces)
     EXPECT_GE(mergedAgain, 8u);
 }
 
+// A board of `columns` x 20 chips, one Box DEF'd once and USE'd, 1 cm apart.
+std::string writeBoardOfChips(const std::string& dir, int columns)
+{
+    std::ostringstream text;
+    text << "#VRML V2.0 utf8\n";
+    for (int y = 0, n = 0; y < 20; ++y)
+        for (int x = 0; x < columns; ++x, ++n)
+            text << "DEF C" << n << " Transform { translation " << 0.01 * x << ' ' << 0.01 * y << " 0 children "
+                 << (n == 0 ? "DEF CHIP Shape { geometry Box { size 0.006 0.004 0.002 } }" : "USE CHIP") << " }\n";
+    const std::string path = dir + "/chips" + std::to_string(columns) + ".wrl";
+    std::ofstream(path) << text.str();
+    return path;
+}
+
+// --hlod auto clusters an assembly of more placements than a frame's draw calls
+// (kDrawCallBudget) for the fewest draw calls, a smaller one for its instances: each file
+// is the chosen mode's, byte for byte after the header, and not the other's.
+TEST(CliHierarchicalLod, AutoDrawsTheFewestCallsAboveTheDrawCallBudget)
+{
+    const std::string dir = freshDirectory("hlod_budget");
+    for (const int columns : {20, 21}) {  // 400 placements, then 420
+        const std::string input = writeBoardOfChips(dir, columns);
+        std::map<std::string, std::string> files;
+        for (const char* mode : {"auto", "calls", "instances"}) {
+            const std::string out = freshDirectory("hlod_budget/" + std::to_string(columns) + mode) + "/board";
+            const CliRun run =
+                runCadlod({"convert", input, "-o", out + ".flt", "--hlod", mode, "--report", out + ".json"});
+            ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+            files[mode] = afterHeader(readFile(out + ".flt"));
+        }
+        const std::string chosen = 20 * std::size_t(columns) > kDrawCallBudget ? "calls" : "instances";
+        const std::string other = chosen == "calls" ? "instances" : "calls";
+        const nlohmann::json hlod =
+            nlohmann::json::parse(readFile(dir + "/" + std::to_string(columns) + "auto/board.json")).at("hlod");
+        EXPECT_EQ(hlod.at("mode"), "auto");
+        EXPECT_EQ(hlod.at("tree"), chosen) << columns;
+        EXPECT_EQ(hlod.at("clusterParts").get<int>(), chosen == "calls" ? 2 : 48);
+        ASSERT_GT(files["auto"].size(), 1000u);
+        EXPECT_TRUE(files["auto"] == files[chosen]) << columns << " columns: not the " << chosen << " file";
+        EXPECT_FALSE(files["auto"] == files[other]) << columns << " columns";
+    }
+}
+
 // A simplified proxy takes each piece in its lightest form within what it may show: a child
 // whose merged proxy keeps its parts at levels chosen for a nearer eye enters as its own
 // pieces where those are lighter. The root of the grid is its one simplified cluster (128

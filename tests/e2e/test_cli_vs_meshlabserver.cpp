@@ -110,6 +110,27 @@ TEST(HeadlessRoutes, FewestDrawCallsWritesTheCommandsToo)
     expectTheCommandsFile("2", "calls");
 }
 
+// Hierarchy 1 chooses as `--hlod auto` does: on a board of 420 chips, more placements than a
+// frame's draw calls, the fewest draw calls; Hierarchy 3 keeps the instances, as `--hlod
+// instances`.
+TEST(HeadlessRoutes, PerPartAndClusterChoosesTheTreeAsTheCommandDoes)
+{
+    const std::string dir = scratchDir("routes_hlod_budget");
+    const std::string input = dir + "/chips.wrl";
+    std::string text = "#VRML V2.0 utf8\n";
+    for (int n = 0; n < 420; ++n)
+        text += "DEF C" + std::to_string(n) + " Transform { translation " + std::to_string(0.01 * (n % 21)) + " " +
+                std::to_string(0.01 * (n / 21)) + " 0 children " +
+                (n == 0 ? "DEF CHIP Shape { geometry Box { size 0.006 0.004 0.002 } }" : "USE CHIP") + " }\n";
+    writeText(input, text);
+    const FilterRun chosen = expectTheCommandsFileOf(input, dir + "/auto", "1", "calls");
+    EXPECT_NE(chosen.log.find("the fewest draw calls near the viewer"), std::string::npos) << chosen.log;
+    const FilterRun instances = expectTheCommandsFileOf(input, dir + "/instances", "3", "instances");
+    EXPECT_NE(instances.log.find("every part its own instance near the viewer"), std::string::npos)
+        << instances.log;
+    EXPECT_FALSE(readText(chosen.file) == readText(instances.file));
+}
+
 TEST(HeadlessRoutes, PerPartAndClusterRefusesALayerNotReadFromVrml)
 {
     const std::string dir = scratchDir("routes_hlod_ply");
