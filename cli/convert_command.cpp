@@ -141,12 +141,13 @@ LodSetResult buildLevels(const ConvertArgs& a, double lengthScale, CoreMesh& ori
 
 nlohmann::json optionsJson(const ConvertArgs& a, const LoadedMesh& loaded)
 {
+    const ClusterTreeOptions tree = clusterTree(a, loaded.placements);
     return {{"lod", a.lod},
             {"instances", a.instances},
             {"hlod", a.hlod},
-            {"clusterParts", clusterTree(a, loaded.placements).leafItems},
-            {"clusterFanout", clusterTree(a, loaded.placements).fanout},
-            {"clusterLargeShare", clusterTree(a, loaded.placements).largeShare},
+            {"clusterParts", tree.leafItems},
+            {"clusterFanout", tree.fanout},
+            {"clusterLargeShare", tree.largeShare},
             {"pixelError", a.pixelError},
             {"fovY", a.fov},
             {"viewport", a.viewport},
@@ -316,6 +317,7 @@ HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, co
 
 nlohmann::json hierarchyJson(const ConvertArgs& a, std::size_t placements, const HierarchyStats& h)
 {
+    const ClusterTreeOptions tree = clusterTree(a, placements);
     return {{"mode", a.hlod},
             {"tree", clusterModeName(clusterMode(a, placements))},
             {"clusters", h.clusters},
@@ -327,9 +329,9 @@ nlohmann::json hierarchyJson(const ConvertArgs& a, std::size_t placements, const
             {"copiedClusters", h.copied},
             {"turnedCopies", h.turned},
             {"mirroredCopies", h.mirrored},
-            {"clusterParts", clusterTree(a, placements).leafItems},
-            {"fanout", clusterTree(a, placements).fanout},
-            {"largeShare", clusterTree(a, placements).largeShare}};
+            {"clusterParts", tree.leafItems},
+            {"fanout", tree.fanout},
+            {"largeShare", tree.largeShare}};
 }
 
 // What the hierarchy is for a model of one placed part: its held levels, and its chunks.

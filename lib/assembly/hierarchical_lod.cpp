@@ -236,7 +236,9 @@ private:
         const double allowance = kProxyInputShare * detail::errorBudgetAt(nearest - work.radius, options_.view);
         MergedParts merged(work.centre);
         double inputError = 0;
-        gather(n, allowance, merged, inputError);
+        std::vector<const Candidate*> lightest(nodes_.size(), nullptr);
+        chooseLightest(n, allowance, lightest);
+        gather(n, allowance, lightest, merged, inputError);
         work.mergedTriangles = merged.triangles();
         {
             ProgressSpan span(progress, int(100 * order / count), int(100 * (order + 1) / count),
@@ -397,19 +399,18 @@ private:
         return local < levels.front().switchIn ? 0 : levels.size() - 1;
     }
 
-    // What cluster n holds, each piece as light as `allowance` lets it be: a child as the
-    // lightest of its candidates within the allowance, or as what it holds where that is
-    // lighter still (a merged candidate keeps every part whole; its children's simplified
-    // proxies may hold the same error in fewer triangles).
-    void gather(std::size_t n, double allowance, MergedParts& merged, double& inputError) const
+    // What cluster n holds, each piece as light as `allowance` lets it be: a child as
+    // chooseLightest chose it, one of its candidates or (null) what it holds.
+    void gather(std::size_t n, double allowance, const std::vector<const Candidate*>& lightest,
+                MergedParts& merged, double& inputError) const
     {
         for (std::size_t p : nodes_[n].items)
             addPlacedLevel(c_.model.placements[p], coarsestWithin(c_.model.placements[p], allowance), merged,
                            inputError);
         for (std::size_t child : nodes_[n].children) {
-            const Candidate* best = lightestInput(child, allowance).first;
+            const Candidate* best = lightest[child];
             if (!best) {
-                gather(child, allowance, merged, inputError);
+                gather(child, allowance, lightest, merged, inputError);
                 continue;
             }
             merged.add(best->level, moveOf(child));
@@ -417,21 +418,25 @@ private:
         }
     }
 
-    // The lightest way cluster n enters a proxy's input within `allowance`: one of its
-    // candidates, or (null) what it holds, each piece so; and its triangles.
-    std::pair<const Candidate*, std::size_t> lightestInput(std::size_t n, double allowance) const
+    // The lightest way each cluster of n's subtree enters a proxy's input within `allowance`,
+    // into `lightest`: the lightest of its candidates within the allowance, or (null) what it
+    // holds, each piece so, where that is lighter still (a merged candidate keeps every part
+    // whole; its children's simplified proxies may hold the same error in fewer triangles).
+    // Returns n's triangles so.
+    std::size_t chooseLightest(std::size_t n, double allowance, std::vector<const Candidate*>& lightest) const
     {
-        std::size_t held = 0;
+        std::size_t triangles = 0;
         for (std::size_t p : nodes_[n].items)
-            held += placedLevel(c_.model.placements[p], coarsestWithin(c_.model.placements[p], allowance))
-                        .triangleCount();
+            triangles += placedLevel(c_.model.placements[p], coarsestWithin(c_.model.placements[p], allowance))
+                             .triangleCount();
         for (std::size_t child : nodes_[n].children)
-            held += lightestInput(child, allowance).second;
-        std::pair<const Candidate*, std::size_t> lightest{nullptr, held};
+            triangles += chooseLightest(child, allowance, lightest);
         for (const Candidate& candidate : candidatesOf(n))
-            if (candidate.error <= allowance && candidate.level.triangleCount() < lightest.second)
-                lightest = {&candidate, candidate.level.triangleCount()};
-        return lightest;
+            if (candidate.error <= allowance && candidate.level.triangleCount() < triangles) {
+                lightest[n] = &candidate;
+                triangles = candidate.level.triangleCount();
+            }
+        return triangles;
     }
 
     // Placement p's coarsest level whose measured error, placed, is within `allowance`.

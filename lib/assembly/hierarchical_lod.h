@@ -11,9 +11,9 @@
 // A proxy is made bottom-up from what the cluster holds, each piece in its lightest form
 // (part level, child proxy, or what the child holds) whose error is at most the error the
 // proxy may show where it is first drawn (kProxyInputShare); its error is that input's plus
-// its own measured against the input (the triangle inequality of the Hausdorff distance). A proxy is kept where it
-// costs less to draw than what it replaces; its ranges are then set top-down: a proxy only
-// the parent's proxy would hide is left out.
+// its own measured against the input (the triangle inequality of the Hausdorff distance). A
+// proxy is kept where it costs less to draw than what it replaces; its ranges are then set
+// top-down: a proxy only the parent's proxy would hide is left out.
 #pragma once
 
 #include "assembly/assembly_convert.h"
