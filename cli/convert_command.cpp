@@ -13,6 +13,7 @@
 #include "assembly/assembly_convert.h"
 #include "assembly/hierarchical_lod.h"
 #include "assembly/level_store.h"
+#include "assembly/part_chunks.h"
 #include "lod/lod_builder.h"
 #include "lod/lod_chain.h"
 #include "lod/scale_lengths.h"
@@ -27,6 +28,7 @@
 #include <limits>
 #include <deque>
 #include <memory>
+#include <utility>
 
 namespace cadlod::cli {
 namespace {
@@ -315,9 +317,23 @@ HierarchyStats clusterPlacements(const ConvertArgs& a, AssemblyConversion& c, co
     return buildHierarchy(c, options, weldingOf(importing), chain, barSpans());
 }
 
-nlohmann::json hierarchyJson(const ConvertArgs& a, std::size_t placements, const HierarchyStats& h)
+// The distinct parts drawn in chunks near the viewer, and their chunks at every depth.
+std::pair<std::size_t, std::size_t> chunksOf(const flt::InstancedModel& model)
 {
+    std::pair<std::size_t, std::size_t> n{0, 0};
+    for (const flt::PartDefinition& definition : model.definitions)
+        if (!definition.chunks.empty()) {
+            ++n.first;
+            n.second += chunkCount(definition.chunks);
+        }
+    return n;
+}
+
+nlohmann::json hierarchyJson(const ConvertArgs& a, const flt::InstancedModel& model, const HierarchyStats& h)
+{
+    const std::size_t placements = model.placements.size();
     const ClusterTreeOptions tree = clusterTree(a, placements);
+    const auto chunks = chunksOf(model);
     return {{"mode", a.hlod},
             {"tree", clusterModeName(clusterMode(a, placements))},
             {"clusters", h.clusters},
@@ -331,7 +347,9 @@ nlohmann::json hierarchyJson(const ConvertArgs& a, std::size_t placements, const
             {"mirroredCopies", h.mirrored},
             {"clusterParts", tree.leafItems},
             {"fanout", tree.fanout},
-            {"largeShare", tree.largeShare}};
+            {"largeShare", tree.largeShare},
+            {"chunkedParts", chunks.first},
+            {"chunks", chunks.second}};
 }
 
 // What the hierarchy is for a model of one placed part: its held levels, and its chunks.
@@ -342,7 +360,8 @@ void printOnePlacementSummary(const ConvertArgs& a, const AssemblyConversion& c)
                          "nearest point", a.hlod.c_str());
     if (!part.chunks.empty())
         std::fprintf(stderr, ", and nearer than its first simplified level it is drawn in %zu chunks, each "
-                             "switched by its own centre", part.chunks.size());
+                             "switched by its own centre and cut again nearer still (%zu chunks in all)",
+                     part.chunks.size(), chunkCount(part.chunks));
     std::fputc('\n', stderr);
 }
 
@@ -425,7 +444,7 @@ void convertInstanced(const ConvertArgs& a, vrml::Scene& scene, const ImportSett
         outputs.write(a.report, [&](const std::string& temporary) {
             nlohmann::json report = assemblyReportJson(a, c, written, imported, importSeconds, lodSeconds,
                                                        writeSeconds, secondsSince(t0));
-            report["hlod"] = hierarchyJson(a, c.model.placements.size(), hierarchy);
+            report["hlod"] = hierarchyJson(a, c.model, hierarchy);
             report["output"]["origin"] = c.model.origin;
             if (!originNote.empty())
                 report["notes"] = {originNote};

@@ -127,9 +127,8 @@ private:
         for (flt::PartDefinition& definition : c_.model.definitions) {
             for (flt::Level& level : definition.levels)
                 level = asOneDrawable(std::move(level), definition.name);
-            for (std::vector<flt::Level>& chunk : definition.chunks)
-                for (flt::Level& level : chunk)
-                    level = asOneDrawable(std::move(level), definition.name);
+            flt::forEachChunkLevel(definition.chunks,
+                                   [&](flt::Level& level) { level = asOneDrawable(std::move(level), definition.name); });
         }
     }
 

@@ -1,12 +1,16 @@
 #include "assembly/part_chunks.h"
 
-#include "lod/cluster_tree.h"  // Box3
+#include "assembly/hierarchical_lod.h"  // kDrawCallTriangles
+#include "lod/cluster_tree.h"           // Box3
 #include "lod/nearest_point.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <string>
+#include <utility>
 
 namespace cadlod {
 namespace {
@@ -20,17 +24,33 @@ Box3 boxOf(const flt::Level& level)
     return b;
 }
 
+Box3 boxOf(const std::vector<flt::Level>& levels)
+{
+    Box3 b;
+    for (const flt::Level& l : levels)
+        b.add(boxOf(l));
+    return b;
+}
+
+double distance(const flt::Vec3d& a, const flt::Vec3d& b)
+{
+    double squared = 0;
+    for (int i = 0; i < 3; ++i)
+        squared += (a[i] - b[i]) * (a[i] - b[i]);
+    return std::sqrt(squared);
+}
+
 class ChunkGrid {
 public:
-    // kChunksPerAxis cells along every axis but a thin one (a plate's thickness): one there.
-    explicit ChunkGrid(const Box3& box) : box_(box)
+    // `perAxis` cells along every axis but a thin one (a plate's thickness): one there.
+    ChunkGrid(const Box3& box, int perAxis) : box_(box), perAxis_(perAxis)
     {
         double longest = 0;
         for (int a = 0; a < 3; ++a)
             longest = std::max(longest, box.hi[a] - box.lo[a]);
         for (int a = 0; a < 3; ++a) {
             size_[a] = std::max(box.hi[a] - box.lo[a], 1e-300);
-            cells_[a] = size_[a] * kChunksPerAxis < longest ? 1 : kChunksPerAxis;
+            cells_[a] = size_[a] * perAxis < longest ? 1 : perAxis;
         }
     }
 
@@ -41,13 +61,14 @@ public:
             const double c =
                 (part.positions[t[0]][a] + part.positions[t[1]][a] + part.positions[t[2]][a]) / 3.0 - box_.lo[a];
             const int i = std::clamp(int(c / size_[a] * cells_[a]), 0, cells_[a] - 1);
-            cell = cell * kChunksPerAxis + i;
+            cell = cell * perAxis_ + i;
         }
         return cell;
     }
 
 private:
     Box3 box_;
+    int perAxis_ = 1;
     std::array<double, 3> size_{};
     std::array<int, 3> cells_{};
 };
@@ -92,14 +113,36 @@ std::map<int, flt::Level> splitLevel(const flt::Level& level, const ChunkGrid& g
     return cells;
 }
 
-// The chunk's levels, each from where it holds at the chunk's nearest point, up to the last
-// one drawn while the eye is nearer than `drawnTo` to `partCentre`.
-std::vector<flt::Level> chunkChain(std::vector<flt::Level> levels, const std::string& name,
-                                   const flt::Vec3d& partCentre, double drawnTo)
+// Whether the first simplified level of a node of this reach waits for the nearest-point
+// floor: smaller pieces of it could switch it in nearer.
+bool coarsensLate(const std::vector<flt::Level>& levels, double reach)
 {
-    Box3 box;
-    for (const flt::Level& l : levels)
-        box.add(boxOf(l));
+    return levels.size() > 1 && levels[1].switchOut < (kNearestPointReach - 1) * reach;
+}
+
+// How a node is cut: cells along each axis, the fewest finest-level triangles a piece holds
+// on average, and how the pieces' names follow the node's.
+struct Cut {
+    int perAxis = kChunksPerAxis;
+    double leastEach = double(kLeastChunkTriangles);
+    const char* separator = " chunk ";
+};
+inline constexpr Cut kChunkCut{};
+inline constexpr Cut kSubchunkCut{kSubchunksPerAxis, kDrawCallTriangles, "."};
+
+std::vector<flt::PartChunk> cut(const std::vector<flt::Level>& levels, const Box3& box, const Cut& how,
+                                const std::string& name, const flt::Vec3d& ownerCentre, double drawnTo);
+
+// One cell's share of the chain (switches as at the centre), drawn while the eye is nearer
+// than `drawnTo` to `ownerCentre`: each level from where it holds at the chunk's nearest
+// point, up to the last one drawn there; nearer than its first simplified level, its own
+// pieces where they could coarsen sooner.
+flt::PartChunk makeChunk(std::vector<flt::Level> levels, const std::string& name, const flt::Vec3d& ownerCentre,
+                         double drawnTo)
+{
+    // Centred on what it draws nearest the viewer: a coarse level's few long triangles, drawn
+    // only from farther, would move its centre and widen its finest level's reach.
+    const Box3 box = levels.front().triangleCount() > 0 ? boxOf(levels.front()) : boxOf(levels);
     const flt::Vec3d centre = box.center();
     std::vector<double> reach;
     for (std::size_t k = 0; k < levels.size(); ++k) {
@@ -107,32 +150,29 @@ std::vector<flt::Level> chunkChain(std::vector<flt::Level> levels, const std::st
         levels[k].name = name + " LOD" + std::to_string(k);
         reach.push_back(levels[k].reachFrom(centre));
     }
-    holdAtNearestPoint(levels, reach);
-    double squared = 0;
-    for (int a = 0; a < 3; ++a)
-        squared += (centre[a] - partCentre[a]) * (centre[a] - partCentre[a]);
-    const double farthest = drawnTo + std::sqrt(squared);
+    std::vector<flt::Level> held = levels;
+    holdAtNearestPoint(held, reach);
+    const double farthest = drawnTo + distance(centre, ownerCentre);
+    flt::PartChunk chunk;
+    if (held.size() > 1 && held[1].switchOut < farthest && coarsensLate(levels, reach.front()))
+        chunk.children = cut(levels, box, kSubchunkCut, name, centre, held[1].switchOut);
     std::size_t drawn = 1;
-    while (drawn < levels.size() && levels[drawn].switchOut < farthest)
+    while (drawn < held.size() && held[drawn].switchOut < farthest)
         ++drawn;
-    levels.resize(drawn);
-    levels.back().switchIn = kNeverCulled;  // the part's own levels take over first
-    return levels;
+    held.resize(drawn);
+    held.back().switchIn = kNeverCulled;  // the owner's own levels take over first
+    if (!chunk.children.empty())
+        held.erase(held.begin());  // its pieces are drawn where its finest level would be
+    chunk.levels = std::move(held);
+    return chunk;
 }
 
-}  // namespace
-
-std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius,
-                                                 double drawnTo)
+// `levels` cut by a grid over `box`; empty when fewer than two cells hold triangles of the
+// finest level, or they would hold fewer than how.leastEach each.
+std::vector<flt::PartChunk> cut(const std::vector<flt::Level>& levels, const Box3& box, const Cut& how,
+                                const std::string& name, const flt::Vec3d& ownerCentre, double drawnTo)
 {
-    if (levels.size() < 2)
-        return {};
-    const Box3 box = boxOf(levels.front());
-    const double radius = levels.front().reachFrom(box.center());
-    // Chunks help where the part's first simplified level waits for the nearest-point floor.
-    if (radius < smallestRadius || levels[1].switchOut >= (kNearestPointReach - 1) * radius)
-        return {};
-    const ChunkGrid grid(box);
+    const ChunkGrid grid(box, how.perAxis);
     std::vector<std::map<int, flt::Level>> split;
     std::map<int, bool> cells;
     for (const flt::Level& level : levels) {
@@ -140,22 +180,45 @@ std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& 
         for (const auto& entry : split.back())
             cells[entry.first] = true;
     }
-    if (split.front().size() < 2 || levels.front().triangleCount() < kLeastChunkTriangles * split.front().size())
+    const double pieces = double(split.front().size());
+    if (pieces < 2 || double(levels.front().triangleCount()) < how.leastEach * pieces)
         return {};
-    std::vector<std::vector<flt::Level>> chunks;
+    std::vector<flt::PartChunk> chunks;
     for (const auto& entry : cells) {
         std::vector<flt::Level> chain;
         for (std::size_t k = 0; k < levels.size(); ++k) {
             const auto found = split[k].find(entry.first);
-            flt::Level l = found != split[k].end() ? found->second : flt::Level{};
+            flt::Level l = found != split[k].end() ? std::move(found->second) : flt::Level{};
             l.switchIn = levels[k].switchIn;
             l.switchOut = levels[k].switchOut;
             chain.push_back(std::move(l));
         }
-        chunks.push_back(chunkChain(std::move(chain), levels.front().name + " chunk " + std::to_string(entry.first),
-                                    levels.front().center, drawnTo));
+        chunks.push_back(
+            makeChunk(std::move(chain), name + how.separator + std::to_string(entry.first), ownerCentre, drawnTo));
     }
     return chunks;
+}
+
+}  // namespace
+
+std::vector<flt::PartChunk> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius,
+                                        double drawnTo)
+{
+    if (levels.size() < 2)
+        return {};
+    const Box3 box = boxOf(levels.front());
+    const double radius = levels.front().reachFrom(box.center());
+    if (radius < smallestRadius || !coarsensLate(levels, radius))
+        return {};
+    return cut(levels, box, kChunkCut, levels.front().name, levels.front().center, drawnTo);
+}
+
+std::size_t chunkCount(const std::vector<flt::PartChunk>& chunks)
+{
+    std::size_t n = chunks.size();
+    for (const flt::PartChunk& chunk : chunks)
+        n += chunkCount(chunk.children);
+    return n;
 }
 
 }  // namespace cadlod

@@ -3,27 +3,35 @@
 // node switches by the distance to its centre, so it must hold its finest level until the
 // viewer is several radii off (lod/nearest_point.h). Cut into a grid of chunks, each level's
 // triangles go to the chunk of their centroid; each chunk is an LOD node of its own, with its
-// own centre and reach, so the chunks away from the viewer coarsen early. The levels are the
-// part's own chain, simplified whole: only the switch distances are the chunk's. Where two
-// chunks show different levels their border may open by up to both levels' errors, each
-// within the pixel error where it is drawn.
+// own centre and reach, so the chunks away from the viewer coarsen early. Nearer than where
+// its own first simplified level holds, a chunk is cut again the same way: wherever the viewer
+// stands, the pieces about them are small enough to coarsen at the distance they are seen
+// from. The levels are the part's own chain, simplified whole: only the switch distances are
+// the chunk's. Where two chunks show different levels their border may open by up to both
+// levels' errors, each within the pixel error where it is drawn.
 #pragma once
 
-#include "openflight/lod_model.h"
+#include "openflight/instanced_writer.h"  // PartChunk
 
 #include <cstddef>
 #include <vector>
 
 namespace cadlod {
 
-// Chunks of at most this share of the part's box, along each axis.
+// A part is first cut into at most this many chunks along each axis.
 inline constexpr int kChunksPerAxis = 4;
+// A chunk is cut again into at most this many along each axis: its pieces are half its size,
+// and so may coarsen at half the distance.
+inline constexpr int kSubchunksPerAxis = 2;
 // A part is cut when its radius is at least this share of the assembly's: smaller parts
 // are as small as the chunks would be, and chunks of them would only add draw calls.
 inline constexpr double kChunkedPartShare = 1.0 / 16.0;
 // A part is cut only where its finest level gives its chunks at least this many triangles
 // each, on average: every chunk is a draw call of its own, and a board of a dozen triangles
-// cut into ten would draw ten calls for what one draws.
+// cut into ten would draw ten calls for what one draws. A chunk is cut again only where its
+// pieces would hold as many triangles each as a draw call costs (kDrawCallTriangles,
+// hierarchical_lod.h): they coarsen nearer, but near the viewer they draw their finest level
+// in more calls.
 inline constexpr std::size_t kLeastChunkTriangles = 64;
 
 // `levels`: the part's chain, finest first, each switched in where its error projects to the
@@ -32,7 +40,10 @@ inline constexpr std::size_t kLeastChunkTriangles = 64;
 // held at its nearest point, takes over): a chunk keeps the levels it shows there. Empty
 // when chunks would not let any level switch nearer, the part's radius is below
 // `smallestRadius`, or its chunks would hold fewer than kLeastChunkTriangles each.
-std::vector<std::vector<flt::Level>> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius,
-                                                 double drawnTo);
+std::vector<flt::PartChunk> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius,
+                                        double drawnTo);
+
+// How many chunks `chunks` hold, at every depth.
+std::size_t chunkCount(const std::vector<flt::PartChunk>& chunks);
 
 }  // namespace cadlod

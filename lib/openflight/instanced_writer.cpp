@@ -181,21 +181,33 @@ private:
             levels_.writeLevels(d.levels, writesLodRecords(d.levels), form.second);
             return;
         }
-        const std::string near = d.name + " chunks";
-        writeLod(w_, near, d.chunksDrawnTo(), 0.0, d.levels.front().center);
+        writeChunks(d.name, d.name + " chunk ", d.chunks, d.chunksDrawnTo(), d.levels.front().center, form.second);
+        levels_.writeLevels({d.levels.begin() + 1, d.levels.end()}, true, form.second, 1);
+    }
+
+    // `chunks` under a LOD record drawn nearer than `drawnTo` to `centre`, each in a Group
+    // named `prefix` and its number, its own children nested the same way beside its levels.
+    void writeChunks(const std::string& owner, const std::string& prefix, const std::vector<PartChunk>& chunks,
+                     double drawnTo, const Vec3d& centre, bool reversed)
+    {
+        const std::string near = owner + " chunks";
+        writeLod(w_, near, drawnTo, 0.0, centre);
         writeLongIdIfNeeded(w_, near);
         writePush(w_);
         ++stats_.lodNodes;
-        for (std::size_t c = 0; c < d.chunks.size(); ++c) {
-            const std::string name = d.name + " chunk " + std::to_string(c + 1);
+        for (std::size_t c = 0; c < chunks.size(); ++c) {
+            const std::string name = prefix + std::to_string(c + 1);
             writeGroup(w_, name);
             writeLongIdIfNeeded(w_, name);
             writePush(w_);
-            levels_.writeLevels(d.chunks[c], true, form.second);
+            const PartChunk& chunk = chunks[c];
+            if (!chunk.children.empty())
+                writeChunks(name, name + ".", chunk.children, chunk.childrenDrawnTo(), chunk.levels.front().center,
+                            reversed);
+            levels_.writeLevels(chunk.levels, true, reversed);
             writePop(w_);
         }
         writePop(w_);
-        levels_.writeLevels({d.levels.begin() + 1, d.levels.end()}, true, form.second, 1);
     }
 
     const InstancedModel& model_;
@@ -246,6 +258,20 @@ bool validateClusters(const InstancedModel& model, std::string& error)
     return true;
 }
 
+// Every chunk with levels, those of one with children drawn from some distance on.
+bool validateChunks(const std::vector<PartChunk>& chunks, std::string& error)
+{
+    for (const PartChunk& chunk : chunks) {
+        if (!validateLevels(chunk.levels, error) || !validateChunks(chunk.children, error))
+            return false;
+        if (!chunk.children.empty() && !(chunk.childrenDrawnTo() > 0)) {
+            error = "a chunk's children are never drawn";
+            return false;
+        }
+    }
+    return true;
+}
+
 bool validate(const InstancedModel& model, const WriteOptions& options, std::string& error)
 {
     if (options.geometry != GeometryRecords::Meshes) {
@@ -258,8 +284,7 @@ bool validate(const InstancedModel& model, const WriteOptions& options, std::str
             error = "it is in chunks and has one level, drawn by none of them";
             valid = false;
         }
-        for (const std::vector<Level>& chunk : d.chunks)
-            valid = valid && validateLevels(chunk, error);
+        valid = valid && validateChunks(d.chunks, error);
         if (!valid) {
             error = "part " + d.name + ": " + error;
             return false;

@@ -21,13 +21,34 @@
 
 namespace cadlod::flt {
 
+// A piece of a part's levels, switched by its own centre (assembly/part_chunks.h), in a Group
+// of its own: drawn as `levels` (finest first, contiguous) from levels.front().switchOut on,
+// and nearer than that (childrenDrawnTo) as its `children`, smaller pieces of the same levels.
+// A chunk without children starts at its finest level, from 0.
+struct PartChunk {
+    std::vector<Level> levels;
+    std::vector<PartChunk> children;
+
+    double childrenDrawnTo() const { return children.empty() ? 0.0 : levels.front().switchOut; }
+};
+
+// `visit(level)` on every level of every chunk, at every depth.
+template <class Chunks, class Visit>
+void forEachChunkLevel(Chunks& chunks, const Visit& visit)
+{
+    for (auto& chunk : chunks) {
+        for (auto& level : chunk.levels)
+            visit(level);
+        forEachChunkLevel(chunk.children, visit);
+    }
+}
+
 struct PartDefinition {
     std::string name;
     std::vector<Level> levels;  // finest first, in the part's own frame
-    // Non-empty: what is drawn in place of `levels` nearer than levels[1] is (chunksDrawnTo),
-    // each chunk (a piece of the levels drawn there, switched by its own centre) in a Group
-    // of its own. A chunked part has two levels or more.
-    std::vector<std::vector<Level>> chunks;
+    // Non-empty: what is drawn in place of `levels` nearer than levels[1] is (chunksDrawnTo).
+    // A chunked part has two levels or more.
+    std::vector<PartChunk> chunks;
 
     double chunksDrawnTo() const { return levels.size() > 1 ? levels[1].switchOut : 0.0; }
 };

@@ -46,11 +46,9 @@ void moveLevel(Level& level, const Vec3d& by)
     shift(level.center, by);
 }
 
-void moveChunks(std::vector<std::vector<Level>>& chunks, const Vec3d& by)
+void moveChunks(std::vector<PartChunk>& chunks, const Vec3d& by)
 {
-    for (std::vector<Level>& chunk : chunks)
-        for (Level& level : chunk)
-            moveLevel(level, by);
+    forEachChunkLevel(chunks, [&](Level& level) { moveLevel(level, by); });
 }
 
 // Where a part's geometry lies far from its own frame's origin (shapes a file placed without

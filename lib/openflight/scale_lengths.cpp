@@ -37,8 +37,7 @@ void scaleLengths(InstancedModel& model, double scale)
 {
     for (PartDefinition& definition : model.definitions) {
         scaleLevels(definition.levels, scale);
-        for (std::vector<Level>& chunk : definition.chunks)
-            scaleLevels(chunk, scale);
+        forEachChunkLevel(definition.chunks, [&](Level& level) { scaleLengths(level, scale); });
     }
     for (PartPlacement& placement : model.placements)
         for (int row = 0; row < 3; ++row)

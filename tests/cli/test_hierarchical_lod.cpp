@@ -23,6 +23,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -424,8 +425,8 @@ std::string writeWavySheet(const std::string& dir)
 }  // namespace
 
 // A file of one part, or of shapes no DEF names, is one part placed once: its levels switch
-// where they hold at its nearest point, and a large one is drawn in chunks near the eye, so
-// that the bound holds inside and along it as it does on an assembly; far off, the part's
+// where they hold at its nearest point, and a large one is drawn in chunks near the eye, cut
+// again nearer still, so that the bound holds inside and along it as it does on an assembly; far off, the part's
 // own levels draw it in one call, not a call per chunk. With --hlod off it is one LOD node
 // switched by its centre, which shows more than the bound from beside it.
 TEST(CliHierarchicalLod, AFileOfOnePartHoldsTheBoundNearItAndIsOneDrawableFarOff)
@@ -435,7 +436,17 @@ TEST(CliHierarchicalLod, AFileOfOnePartHoldsTheBoundNearItAndIsOneDrawableFarOff
     const CliRun run = runCadlod({"convert", input, "-o", dir + "/sheet.flt", "--report", dir + "/sheet.json"});
     ASSERT_EQ(run.exitCode, 0) << run.stderrText;
     EXPECT_NE(run.stderrText.find("chunks, each switched by its own centre"), std::string::npos) << run.stderrText;
+    // Each of them would hold its finest level to six of its radii: cut again, nearer still.
+    std::size_t top = 0, all = 0;
+    const std::size_t at = run.stderrText.find("drawn in ");
+    ASSERT_NE(at, std::string::npos);
+    ASSERT_EQ(std::sscanf(run.stderrText.c_str() + at, "drawn in %zu chunks, each switched by its own centre and cut "
+                                                          "again nearer still (%zu chunks in all)", &top, &all), 2)
+        << run.stderrText;
+    EXPECT_GT(all, 2 * top);
     const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/sheet.json"));
+    EXPECT_EQ(report.at("hlod").at("chunkedParts"), 1);
+    EXPECT_EQ(report.at("hlod").at("chunks"), all);
     EXPECT_GE(report.at("levels").size(), 3u);
     EXPECT_EQ(report.at("input").at("placements"), 1);
 
