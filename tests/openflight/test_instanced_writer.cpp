@@ -169,6 +169,27 @@ TEST(InstancedWriter, FaceRecordsAreRefused)
     EXPECT_NE(error.find("Mesh records"), std::string::npos) << error;
 }
 
+// A chunk with pieces of its own draws them nearer than its first level: one whose first level
+// is drawn from 0 would never show them, and the model is refused, naming the part.
+TEST(InstancedWriter, AChunkWhosePiecesAreNeverDrawnIsRefused)
+{
+    flt::InstancedModel m = threeCubesOneMirrored();
+    flt::PartDefinition& cube = m.definitions.front();
+    flt::PartChunk piece;
+    piece.levels = {cube.levels.front()};
+    flt::PartChunk chunk;
+    chunk.levels = {cube.levels.back()};  // from 10 on: its piece is drawn nearer
+    chunk.children = {piece};
+    cube.chunks = {chunk};
+    std::vector<std::uint8_t> bytes;
+    std::string error;
+    EXPECT_TRUE(flt::writeInstancedOpenFlight(m, flt::WriteOptions{}, bytes, error)) << error;
+
+    cube.chunks.front().levels = {cube.levels.front()};  // from 0: nothing nearer
+    EXPECT_FALSE(flt::writeInstancedOpenFlight(m, flt::WriteOptions{}, bytes, error));
+    EXPECT_NE(error.find("part cube: a chunk's children are never drawn"), std::string::npos) << error;
+}
+
 // cadlod's own reader (the MeshLab import, `cadlod info`, `cadlod report`) reads every placement
 // as a copy of its part where OSG draws it, the k-th level of every part as level k.
 TEST(InstancedWriter, OurReaderPlacesEveryInstanceAsOsgDoes)
