@@ -9,7 +9,10 @@
 #include <osg/TriangleIndexFunctor>
 #include <osgDB/ReadFile>
 
+#include "measure/triangle_tree.h"
+
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <set>
 
@@ -20,6 +23,32 @@ struct Count {
     std::size_t triangles = 0;
     void operator()(unsigned a, unsigned b, unsigned c) { triangles += (a != b && b != c && a != c); }
 };
+
+// A geometry's triangles as corner indices.
+struct Corners {
+    std::vector<std::array<unsigned, 3>> triangles;
+    void operator()(unsigned a, unsigned b, unsigned c)
+    {
+        if (a != b && b != c && a != c)
+            triangles.push_back({a, b, c});
+    }
+};
+
+// Appends the triangles of `g`, placed by `m`, to `out`; not those with two corners at one
+// point, such as a triangle strip's joins, whose centroid may lie off the surface.
+void appendTriangles(const osg::Geometry& g, const osg::Matrixd& m, std::vector<std::array<osg::Vec3d, 3>>& out)
+{
+    const auto* v = dynamic_cast<const osg::Vec3Array*>(g.getVertexArray());
+    if (!v)
+        return;
+    osg::TriangleIndexFunctor<Corners> corners;
+    g.accept(corners);
+    for (const auto& t : corners.triangles) {
+        const osg::Vec3 &a = (*v)[t[0]], &b = (*v)[t[1]], &c = (*v)[t[2]];
+        if (a != b && b != c && a != c)
+            out.push_back({osg::Vec3d(a) * m, osg::Vec3d(b) * m, osg::Vec3d(c) * m});
+    }
+}
 
 // The names that frame placements: the model's (the header's ID holds 7 characters of it),
 // clusters ("cluster 1.2": a space no VRML name holds) and the LOD nodes OSG makes.
@@ -115,6 +144,9 @@ public:
 
     OsgView view;
 
+    // Every triangle drawn goes to `drawn` too, placed.
+    void collectInto(std::vector<std::array<osg::Vec3d, 3>>& drawn) { drawn_ = &drawn; }
+
 private:
     bool enter(osg::Node& node)
     {
@@ -151,6 +183,8 @@ private:
         const auto* v = dynamic_cast<const osg::Vec3Array*>(g.getVertexArray());
         if (!v || v->empty())
             return;
+        if (drawn_)
+            appendTriangles(g, matrices_.back(), *drawn_);
         osg::TriangleIndexFunctor<Count> count;
         g.accept(count);
         view.triangles += count.triangles;
@@ -171,6 +205,7 @@ private:
     std::vector<double> switchedIn_;
     std::vector<std::string> placement_;
     int proxyDepth_ = 0;
+    std::vector<std::array<osg::Vec3d, 3>>* drawn_ = nullptr;
 };
 
 // OSG makes one osg::LOD of each LOD record, or one of several: the LOD children of a
@@ -219,6 +254,36 @@ public:
             }
     }
     std::size_t triangles = 0;
+};
+
+// The finest geometry's triangles, placed: every LOD node at its child drawn from up close.
+class FinestTriangles : public osg::NodeVisitor {
+public:
+    FinestTriangles() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) { matrices_.push_back(osg::Matrixd::identity()); }
+    void apply(osg::Transform& t) override
+    {
+        osg::Matrixd local;
+        t.computeLocalToWorldMatrix(local, this);
+        matrices_.push_back(local * matrices_.back());
+        traverse(t);
+        matrices_.pop_back();
+    }
+    void apply(osg::LOD& lod) override
+    {
+        for (unsigned i = 0; i < lod.getNumChildren() && i < lod.getNumRanges(); ++i)
+            if (lod.getMinRange(i) <= 0 && lod.getMaxRange(i) > 0)
+                lod.getChild(i)->accept(*this);
+    }
+    void apply(osg::Geode& geode) override
+    {
+        for (unsigned i = 0; i < geode.getNumDrawables(); ++i)
+            if (const osg::Geometry* g = geode.getDrawable(i)->asGeometry())
+                appendTriangles(*g, matrices_.back(), triangles);
+    }
+    std::vector<std::array<osg::Vec3d, 3>> triangles;
+
+private:
+    std::vector<osg::Matrixd> matrices_;
 };
 
 }  // namespace
@@ -275,6 +340,52 @@ std::size_t OsgViewProbe::finestTriangles() const
     FinestCounter c;
     impl_->root->accept(c);
     return c.triangles;
+}
+
+std::vector<Point3> OsgViewProbe::finestSamples(std::size_t most) const
+{
+    FinestTriangles finest;
+    impl_->root->accept(finest);
+    const std::size_t n = finest.triangles.size();
+    const std::size_t stride = std::max<std::size_t>(1, (n + most - 1) / std::max<std::size_t>(most, 1));
+    std::vector<Point3> samples;
+    for (std::size_t i = 0; i < n; i += stride) {
+        const auto& t = finest.triangles[i];
+        const osg::Vec3d c = (t[0] + t[1] + t[2]) / 3.0;
+        samples.push_back({c.x(), c.y(), c.z()});
+    }
+    return samples;
+}
+
+OsgGaps OsgViewProbe::gapsFrom(const Point3& eye, const std::vector<Point3>& samples, double pixelRadians,
+                               double widerThanPx) const
+{
+    const osg::Vec3d e(eye[0], eye[1], eye[2]);
+    Drawer drawer(e, impl_->model);
+    std::vector<std::array<osg::Vec3d, 3>> drawn;
+    drawer.collectInto(drawn);
+    impl_->root->accept(drawer);
+    // Single-precision corners about the eye: the distances that matter are those near it.
+    std::vector<vcg::Point3f> vertices;
+    std::vector<TriangleTree::Corners> corners;
+    for (const auto& t : drawn) {
+        const auto first = std::uint32_t(vertices.size());
+        for (const osg::Vec3d& p : t)
+            vertices.emplace_back(float(p.x() - e.x()), float(p.y() - e.y()), float(p.z() - e.z()));
+        corners.push_back({first, first + 1, first + 2});
+    }
+    const TriangleTree tree(std::move(vertices), std::move(corners));
+    OsgGaps gaps;
+    for (const Point3& s : samples) {
+        const vcg::Point3d p(s[0] - e.x(), s[1] - e.y(), s[2] - e.z());
+        double gap = std::numeric_limits<double>::infinity();
+        if (!tree.empty())
+            tree.closest(p, std::numeric_limits<double>::infinity(), gap);
+        const double px = gap / (p.Norm() * pixelRadians);
+        gaps.widestPx = std::max(gaps.widestPx, px);
+        gaps.wider += px > widerThanPx ? 1 : 0;
+    }
+    return gaps;
 }
 
 std::array<Point3, 2> OsgViewProbe::bounds() const

@@ -4,7 +4,10 @@
 // (scaled to the model), and n, the distance from the eye to its nearest vertex; s / n is
 // the error a viewer reads off the switch distance. For each placement (the outermost
 // named node below the model's frame: its root, clusters and OSG's LOD nodes), how many
-// times it is drawn, by itself or by a cluster proxy standing for it.
+// times it is drawn, by itself or by a cluster proxy standing for it. And the widest gap on
+// screen: how far points of the finest geometry are from everything drawn, in pixels at
+// their own distance; a level within its error leaves none wider than that error, a chunk
+// or part missing where its neighbours have coarsened leaves a hole as wide as it is.
 #pragma once
 
 #include <array>
@@ -25,6 +28,12 @@ struct OsgView {
     std::map<std::string, std::size_t> drawnPlacements;  // drawn by itself or by a proxy
 };
 
+// The gaps on screen from one eye point (OsgViewProbe::gapsFrom).
+struct OsgGaps {
+    double widestPx = 0;    // the widest over the samples
+    std::size_t wider = 0;  // samples whose gap is wider than asked
+};
+
 // The LOD children of one node (sharing a parent and a centre).
 struct OsgLodRanges {
     std::vector<std::pair<double, double>> ranges;  // [min, max) per child, in child order
@@ -38,6 +47,14 @@ public:
     std::vector<OsgLodRanges> lodNodes() const;
     std::array<Point3, 2> bounds() const;
     std::size_t finestTriangles() const;  // every LOD node at its child drawn from up close
+    // Points on the finest geometry (every LOD node at its child drawn from up close), in the
+    // model's frame: the centroids of its triangles, of at most `most` of them evenly spread.
+    std::vector<Point3> finestSamples(std::size_t most) const;
+    // For each sample, its gap from `eye`: the distance to the nearest triangle drawn from
+    // there, over the size of a pixel `pixelRadians` wide at the sample's distance from the
+    // eye. The widest, and how many are wider than `widerThanPx`.
+    OsgGaps gapsFrom(const Point3& eye, const std::vector<Point3>& samples, double pixelRadians,
+                     double widerThanPx) const;
     ~OsgViewProbe();
 
 private:
