@@ -1,14 +1,18 @@
 // A large part seen from up close, in chunks (design.md §5, HLOD below the part): a viewer
 // beside a long housing is near one end of it and far from the other, but the part's one LOD
 // node switches by the distance to its centre, so it must hold its finest level until the
-// viewer is several radii off (lod/nearest_point.h). Cut into a grid of chunks, each level's
-// triangles go to the chunk of their centroid; each chunk is an LOD node of its own, with its
-// own centre and reach, so the chunks away from the viewer coarsen early. Nearer than where
-// its own first simplified level holds, a chunk is cut again the same way: wherever the viewer
-// stands, the pieces about them are small enough to coarsen at the distance they are seen
-// from. The levels are the part's own chain, simplified whole: only the switch distances are
-// the chunk's. Where two chunks show different levels their border may open by up to both
-// levels' errors, each within the pixel error where it is drawn.
+// viewer is several radii off (lod/nearest_point.h). Cut into a grid of chunks, the finest
+// level's triangles go to the chunk of their centroid; each chunk is an LOD node of its own,
+// with its own centre and reach, so the chunks away from the viewer coarsen early. The finest
+// triangles longer than a chunk (a face's slivers, a plate's two triangles) are a chunk of
+// their own: taken by a cell, one of them would hold that cell's whole chunk back to the
+// part's own reach. A coarse triangle goes to every chunk whose finest triangles it stands
+// for, so each chunk's levels cover the surface its finest level does: where two chunks show
+// different levels they overlap, and open no hole. Nearer than where its own first
+// simplified level holds, a chunk is cut again the same way: wherever the viewer stands, the
+// pieces about them are small enough to coarsen at the distance they are seen from. The
+// levels are the part's own chain, simplified whole: only the switch distances are the
+// chunk's.
 #pragma once
 
 #include "openflight/instanced_writer.h"  // PartChunk

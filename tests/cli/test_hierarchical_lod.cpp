@@ -326,10 +326,19 @@ TEST(CliHierarchicalLod, AFileThatSharesNothingIsClusteredByItsParts)
     const OsgViewProbe osg(dir + "/parts.flt", "parts");
     ASSERT_TRUE(osg.loaded());
     std::size_t farDrawables = 0;
+    // Where neighbouring chunks show different levels, none leaves a hole: every point of the
+    // finest level is within the error bound of what is drawn (5 % slack for the samples).
+    const ViewParams defaults;
+    const double pixelRadians = 2 * std::tan(defaults.fovYDegrees * M_PI / 360) / defaults.viewportHeightPx;
+    const std::vector<Point3> samples = osg.finestSamples(20000);
+    ASSERT_GT(samples.size(), 10000u);
     const std::vector<Point3> eyes = eyePoints(osg.bounds());
     for (const Point3& eye : eyes) {
         const OsgView view = osg.drawFrom(eye);
         EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9));
+        const OsgGaps gaps = osg.gapsFrom(eye, samples, pixelRadians, kApparentErrorBound * 1.05);
+        EXPECT_EQ(gaps.wider, 0u) << "widest gap " << gaps.widestPx << " px from " << eye[0] << " " << eye[1] << " "
+                                  << eye[2];
         EXPECT_EQ(view.drawnPlacements.size(), 32u);
         farDrawables = view.drawables;
     }
@@ -427,7 +436,8 @@ std::string writeWavySheet(const std::string& dir)
 // A file of one part, or of shapes no DEF names, is one part placed once: its levels switch
 // where they hold at its nearest point, and a large one is drawn in chunks near the eye, cut
 // again nearer still, so that the bound holds inside and along it as it does on an assembly; far off, the part's
-// own levels draw it in one call, not a call per chunk. With --hlod off it is one LOD node
+// own levels draw it in one call, not a call per chunk. Chunks at different levels leave no
+// hole between them. With --hlod off it is one LOD node
 // switched by its centre, which shows more than the bound from beside it.
 TEST(CliHierarchicalLod, AFileOfOnePartHoldsTheBoundNearItAndIsOneDrawableFarOff)
 {
@@ -458,10 +468,19 @@ TEST(CliHierarchicalLod, AFileOfOnePartHoldsTheBoundNearItAndIsOneDrawableFarOff
         for (std::size_t i = 0; i + 1 < r.size(); ++i)
             EXPECT_NEAR(r[i].second, r[i + 1].first, 1e-6 * r[i].second);
     }
+    // Where neighbouring chunks show different levels, none leaves a hole: every point of the
+    // finest level is within the error bound of what is drawn (5 % slack for the samples).
+    const ViewParams defaults;
+    const double pixelRadians = 2 * std::tan(defaults.fovYDegrees * M_PI / 360) / defaults.viewportHeightPx;
+    const std::vector<Point3> samples = osg.finestSamples(20000);
+    ASSERT_GT(samples.size(), 10000u);
     const std::vector<Point3> eyes = eyePoints(osg.bounds());
     for (const Point3& eye : eyes) {
         const OsgView view = osg.drawFrom(eye);
         EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9));
+        const OsgGaps gaps = osg.gapsFrom(eye, samples, pixelRadians, kApparentErrorBound * 1.05);
+        EXPECT_EQ(gaps.wider, 0u) << "widest gap " << gaps.widestPx << " px from " << eye[0] << " " << eye[1] << " "
+                                  << eye[2];
         EXPECT_GE(view.triangles, 1u);  // drawn from every eye
         const std::size_t i = std::size_t(&eye - &eyes.front());
         if (i < 52) {  // inside and walking: its chunks

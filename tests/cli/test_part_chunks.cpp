@@ -2,7 +2,8 @@
 // each chunk switches where its own level holds at the chunk's nearest point, so the
 // chunks switch far nearer than the whole part's one LOD node may; a chunk whose first
 // simplified level waits for that floor is cut again, down to pieces of a draw call's
-// triangles.
+// triangles; triangles longer than a chunk, and what stands for them, are a chunk of their
+// own.
 #include "assembly/part_chunks.h"
 
 #include "assembly/hierarchical_lod.h"  // kDrawCallTriangles
@@ -34,6 +35,58 @@ flt::Level strip(int cells, double switchOut, double switchIn)
     level.switchOut = switchOut;
     level.switchIn = switchIn;
     return level;
+}
+
+// A plate 1 m by 0.5 m, 0.1 m below the strip, in two triangles.
+flt::Level withPlate(flt::Level level)
+{
+    flt::Part plate;
+    plate.name = "plate";
+    plate.positions = {{0, 0, -0.1}, {1, 0, -0.1}, {1, 0.5, -0.1}, {0, 0.5, -0.1}};
+    plate.triangles = {{0, 1, 2}, {0, 2, 3}};
+    level.parts.push_back(plate);
+    return level;
+}
+
+std::size_t trianglesOf(const flt::Level& level, const std::string& partName)
+{
+    std::size_t n = 0;
+    for (const flt::Part& part : level.parts)
+        n += part.name == partName ? part.triangles.size() : 0;
+    return n;
+}
+
+// Whether a triangle of `level` in the plane of `p` holds it.
+bool covers(const flt::Level& level, const flt::Vec3d& p)
+{
+    for (const flt::Part& part : level.parts)
+        for (const flt::Triangle& t : part.triangles) {
+            const flt::Vec3d &a = part.positions[t[0]], &b = part.positions[t[1]], &c = part.positions[t[2]];
+            if (std::abs(a[2] - p[2]) > 1e-12 || std::abs(b[2] - p[2]) > 1e-12 || std::abs(c[2] - p[2]) > 1e-12)
+                continue;
+            const auto side = [&](const flt::Vec3d& u, const flt::Vec3d& v) {
+                return (v[0] - u[0]) * (p[1] - u[1]) - (v[1] - u[1]) * (p[0] - u[0]);
+            };
+            const double d0 = side(a, b), d1 = side(b, c), d2 = side(c, a);
+            if ((d0 >= -1e-15 && d1 >= -1e-15 && d2 >= -1e-15) || (d0 <= 1e-15 && d1 <= 1e-15 && d2 <= 1e-15))
+                return true;
+        }
+    return false;
+}
+
+// Every level `chunk` holds covers the centroid of each of its finest triangles: whatever
+// level its neighbours show, the chunk leaves no hole where its own finest level was.
+void expectEveryLevelCoversItsFinest(const flt::PartChunk& chunk)
+{
+    ASSERT_TRUE(chunk.children.empty());
+    for (const flt::Part& part : chunk.levels.front().parts)
+        for (const flt::Triangle& t : part.triangles) {
+            flt::Vec3d c{};
+            for (int a = 0; a < 3; ++a)
+                c[a] = (part.positions[t[0]][a] + part.positions[t[1]][a] + part.positions[t[2]][a]) / 3;
+            for (std::size_t k = 1; k < chunk.levels.size(); ++k)
+                EXPECT_TRUE(covers(chunk.levels[k], c)) << chunk.levels[k].name << " at x " << c[0];
+        }
 }
 
 }  // namespace
@@ -95,9 +148,10 @@ void walk(const std::vector<flt::PartChunk>& chunks, double drawnTo, std::size_t
             EXPECT_DOUBLE_EQ(chunk.levels[k].switchIn, chunk.levels[k + 1].switchOut);
         EXPECT_GE(chunk.levels.back().switchIn, kNeverCulled);
         EXPECT_LT(chunk.levels.front().switchOut, drawnTo);
-        for (const flt::Level& level : chunk.levels)  // held at its own nearest point
+        for (const flt::Level& level : chunk.levels) {  // held at its own nearest point
             if (level.switchOut > 0)
                 EXPECT_GE(level.switchOut, kNearestPointReach * level.reachFrom(level.center) * (1 - 1e-9));
+        }
         if (chunk.children.empty()) {
             EXPECT_EQ(chunk.levels.front().switchOut, 0.0);
             tally.finestTriangles += chunk.levels.front().triangleCount();
@@ -139,6 +193,54 @@ TEST(PartChunks, AChunkWaitingForTheNearestPointFloorIsCutAgain)
     const double leafReach = std::hypot(0.125 / 8, 0.005);
     EXPECT_NEAR(tally.smallestFirstSwitch, switchAtNearestPoint(0.01, leafReach), 1e-9);
     EXPECT_LT(tally.smallestFirstSwitch, chunks.front().childrenDrawnTo() / 4);
+}
+
+// A plate's two triangles under a finely cut strip, as a CAD part holds a face's few long
+// triangles beside many small ones. Taken by a cell, a plate triangle would give that chunk
+// the whole part's reach: the chunk would hold its finest level as long as the part does.
+// The plate is a chunk of its own on every level; the strip's coarse triangles, though
+// longer than a cell, stand for short ones and stay with the cells, whose finest levels
+// reach no farther than their own cell.
+TEST(PartChunks, LongTrianglesAndWhatStandsForThemAreAChunkOfTheirOwn)
+{
+    const std::vector<flt::Level> levels{withPlate(strip(1024, 0, 1.0)), withPlate(strip(64, 1.0, 4.0)),
+                                         withPlate(strip(2, 4.0, 1e30))};
+    const std::vector<flt::PartChunk> chunks = chunkLevels(levels, 0.0, kNeverCulled);
+    ASSERT_EQ(chunks.size(), 5u);  // four along the strip, and the plate
+    std::size_t longChunks = 0, finest = 0;
+    for (const flt::PartChunk& chunk : chunks) {
+        ASSERT_TRUE(chunk.children.empty());  // the strip's chunks switch by their error
+        ASSERT_EQ(chunk.levels.size(), levels.size());
+        const bool isLong = chunk.levels.front().name.find("chunk long") != std::string::npos;
+        longChunks += isLong ? 1 : 0;
+        finest += chunk.levels.front().triangleCount();
+        for (const flt::Level& level : chunk.levels) {
+            EXPECT_EQ(trianglesOf(level, "plate"), isLong ? 2u : 0u) << level.name;
+            EXPECT_EQ(trianglesOf(level, "bar"), isLong ? 0u : level.triangleCount()) << level.name;
+        }
+        if (!isLong) {  // a quarter of the strip: the plate's 0.5 m width is not the chunk's
+            EXPECT_LE(chunk.levels.front().reachFrom(chunk.levels.front().center), std::hypot(0.125, 0.005) + 1e-9);
+        }
+        expectEveryLevelCoversItsFinest(chunk);
+    }
+    EXPECT_EQ(longChunks, 1u);
+    EXPECT_EQ(finest, levels.front().triangleCount());
+}
+
+// A coarse triangle across a chunk border stands for finest triangles on both sides. Given to
+// the chunk of its centroid alone, it would leave a hole in its neighbour wherever the
+// neighbour shows that level and the chunk of its centroid still its finest: it is in both.
+TEST(PartChunks, ACoarseTriangleAcrossABorderIsInEveryChunkItStandsFor)
+{
+    const std::vector<flt::Level> levels{strip(1024, 0, 1.0), strip(3, 1.0, 4.0), strip(1, 4.0, 1e30)};
+    const std::vector<flt::PartChunk> chunks = chunkLevels(levels, 0.0, kNeverCulled);
+    ASSERT_EQ(chunks.size(), 4u);
+    std::size_t finest = 0;
+    for (const flt::PartChunk& chunk : chunks) {
+        finest += chunk.levels.front().triangleCount();
+        expectEveryLevelCoversItsFinest(chunk);
+    }
+    EXPECT_EQ(finest, levels.front().triangleCount());  // each finest triangle in one chunk
 }
 
 }  // namespace cadlod::test
