@@ -153,7 +153,11 @@ PartChain convertPart(vrml::Geometry& geometry, const PartWelding& welding, cons
     skippedFaces += skipped;
     definition.name = geometry.name;
     definition.levels = std::move(levels.levels);
-    definition.chunks = chunkLevels(definition.levels, smallestChunkedRadius, firstHeldSwitch(definition.levels));
+    std::vector<double> errors;
+    for (const LodLevel& level : chain.result.levels)
+        errors.push_back(level.hausdorffMax);
+    definition.chunks =
+        chunkLevels(definition.levels, errors, smallestChunkedRadius, firstHeldSwitch(definition.levels));
     holdAtNearestPoint(definition.levels, chain.result);
     return chain;
 }

@@ -1,9 +1,10 @@
 #include "assembly/part_chunks.h"
 
+#include "assembly/box_clip.h"
+#include "assembly/finest_support.h"
 #include "assembly/hierarchical_lod.h"  // kDrawCallTriangles
 #include "lod/cluster_tree.h"           // Box3
 #include "lod/nearest_point.h"
-#include "measure/triangle_tree.h"
 
 #include <algorithm>
 #include <array>
@@ -15,6 +16,12 @@
 
 namespace cadlod {
 namespace {
+
+// A coarse level is cut to a chunk's box grown by its error times this (the error is
+// measured from samples, which may miss its largest distance by a few percent)...
+constexpr double kClipErrorSlack = 1.5;
+// ...and by this share of the box's half-diagonal, for coordinates rounded to single precision.
+constexpr double kClipRounding = 1e-4;
 
 Box3 boxOf(const flt::Level& level)
 {
@@ -33,137 +40,18 @@ double distance(const flt::Vec3d& a, const flt::Vec3d& b)
     return std::sqrt(squared);
 }
 
-flt::Vec3d centroidOf(const flt::Part& part, const flt::Triangle& t)
-{
-    flt::Vec3d c{};
-    for (int a = 0; a < 3; ++a)
-        c[a] = (part.positions[t[0]][a] + part.positions[t[1]][a] + part.positions[t[2]][a]) / 3.0;
-    return c;
-}
-
-flt::Vec3f extentOf(const flt::Part& part, const flt::Triangle& t)
-{
-    flt::Vec3f extent{};
-    for (int a = 0; a < 3; ++a) {
-        const double p = part.positions[t[0]][a], q = part.positions[t[1]][a], r = part.positions[t[2]][a];
-        extent[a] = float(std::max({p, q, r}) - std::min({p, q, r}));
-    }
-    return extent;
-}
-
-// A level's triangles in one tree, their corners in single precision about `origin` (which
-// keeps the precision of site coordinates), numbered part after part.
-TriangleTree treeOf(const flt::Level& level, const flt::Vec3d& origin)
-{
-    std::vector<vcg::Point3f> vertices;
-    std::vector<TriangleTree::Corners> corners;
-    for (const flt::Part& part : level.parts) {
-        const auto first = std::uint32_t(vertices.size());
-        for (const flt::Vec3d& p : part.positions)
-            vertices.emplace_back(float(p[0] - origin[0]), float(p[1] - origin[1]), float(p[2] - origin[2]));
-        for (const flt::Triangle& t : part.triangles)
-            corners.push_back({first + t[0], first + t[1], first + t[2]});
-    }
-    return TriangleTree(std::move(vertices), std::move(corners));
-}
-
-// The index in treeOf(level) of the triangle nearest `p`.
-std::uint32_t nearestIn(const TriangleTree& tree, const flt::Vec3d& p, const flt::Vec3d& origin)
-{
-    double distance = 0;
-    const std::int64_t i = tree.closest(vcg::Point3d(p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]),
-                                        std::numeric_limits<double>::infinity(), distance);
-    return std::uint32_t(std::max<std::int64_t>(i, 0));
-}
-
-// The finest level's triangles: where each lies and how far it spans along each axis.
-class FinestTriangles {
-public:
-    explicit FinestTriangles(const flt::Level& finest)
-    {
-        for (const flt::Part& part : finest.parts)
-            for (const flt::Triangle& t : part.triangles) {
-                centroids_.push_back(centroidOf(part, t));
-                extents_.push_back(extentOf(part, t));
-            }
-    }
-
-    std::size_t size() const { return centroids_.size(); }
-    const flt::Vec3d& centroid(std::uint32_t i) const { return centroids_[i]; }
-    const flt::Vec3f& extent(std::uint32_t i) const { return extents_[i]; }
-
-private:
-    std::vector<flt::Vec3d> centroids_;
-    std::vector<flt::Vec3f> extents_;
-};
-
-// A level's triangles, each with the finest triangles it stands for (a finest triangle:
-// itself), as indices into FinestTriangles.
-struct SupportedLevel {
-    struct Support {
-        std::vector<std::uint32_t> start{0};  // triangle t's are finest[start[t], start[t + 1])
-        std::vector<std::uint32_t> finest;
-    };
-    flt::Level level;
-    std::vector<Support> support;  // one per part
-};
-
-// What each triangle of coarse level `level` stands for: the finest triangles whose
-// centroid it is the nearest triangle to, so that wherever a finest triangle was, the coarse
-// triangles of its chunk cover it; or, where it is nearest to none, the finest triangle
-// nearest its own centroid.
-SupportedLevel supportOf(const flt::Level& level, const FinestTriangles& finest, const TriangleTree& finestTree,
-                         const flt::Vec3d& origin)
-{
-    const TriangleTree tree = treeOf(level, origin);
-    std::vector<std::vector<std::uint32_t>> standsFor(level.triangleCount());
-    for (std::uint32_t f = 0; f < finest.size(); ++f)
-        standsFor[nearestIn(tree, finest.centroid(f), origin)].push_back(f);
-    SupportedLevel out{level, {}};
-    std::size_t i = 0;
-    for (const flt::Part& part : level.parts) {
-        SupportedLevel::Support& support = out.support.emplace_back();
-        for (const flt::Triangle& t : part.triangles) {
-            std::vector<std::uint32_t>& own = standsFor[i++];
-            if (own.empty())
-                own.push_back(nearestIn(finestTree, centroidOf(part, t), origin));
-            support.finest.insert(support.finest.end(), own.begin(), own.end());
-            support.start.push_back(std::uint32_t(support.finest.size()));
-        }
-    }
-    return out;
-}
-
-std::vector<SupportedLevel> supported(const std::vector<flt::Level>& levels, const FinestTriangles& finest)
-{
-    const flt::Vec3d origin = boxOf(levels.front()).center();
-    const TriangleTree finestTree = treeOf(levels.front(), origin);
-    std::vector<SupportedLevel> out;
-    SupportedLevel& first = out.emplace_back(SupportedLevel{levels.front(), {}});
-    std::uint32_t next = 0;
-    for (const flt::Part& part : levels.front().parts) {
-        SupportedLevel::Support& support = first.support.emplace_back();
-        for (std::size_t t = 0; t < part.triangles.size(); ++t) {
-            support.finest.push_back(next++);
-            support.start.push_back(std::uint32_t(support.finest.size()));
-        }
-    }
-    for (std::size_t k = 1; k < levels.size(); ++k)
-        out.push_back(supportOf(levels[k], finest, finestTree, origin));
-    return out;
-}
-
 // A grid over a node's box. A finest triangle goes to the cell of its centroid, unless it is
 // longer than a cell along a cut axis: whichever cell took it would widen its chunk's reach,
 // and so the distance that whole chunk waits before it coarsens. CAD tessellations hold such
 // triangles (a face's slivers, a plate's two triangles) beside many small ones; they go to
 // the long cell, a chunk of its own that coarsens late but holds few triangles. A coarse
-// triangle goes to every cell of the finest triangles it stands for: a chunk's coarse level
-// then covers each finest triangle it held, at its centroid, within the level's error, so
-// chunks at different levels overlap where the triangle is drawn twice, and leave no holes.
+// triangle goes to every cell of the finest triangles it stands for (finest_support.h), cut
+// to the cell's box (splitCoarse): a chunk's coarse level then covers each finest triangle it
+// held within the level's error, so chunks at different levels overlap, and leave no holes.
 class ChunkGrid {
 public:
     static constexpr int kLongCell = -1;
+    static constexpr int kOutside = -2;
 
     // `perAxis` cells along every axis but a thin one (a plate's thickness): one there.
     ChunkGrid(const Box3& box, int perAxis) : box_(box), perAxis_(perAxis)
@@ -177,9 +65,15 @@ public:
         }
     }
 
-    // The cell of finest triangle `i`.
+    // The cell of finest triangle `i`; kOutside where its centroid is off the box (another
+    // node's triangle, which a coarse triangle of this node also stands for).
     int cellOf(const FinestTriangles& finest, std::uint32_t i) const
     {
+        for (int a = 0; a < 3; ++a) {
+            const double slack = 1e-9 * size_[a];  // a centroid on the box's side, rounded
+            if (finest.centroid(i)[a] < box_.lo[a] - slack || finest.centroid(i)[a] > box_.hi[a] + slack)
+                return kOutside;
+        }
         int cell = 0;
         for (int a = 0; a < 3; ++a) {
             if (cells_[a] > 1 && finest.extent(i)[a] > size_[a] / cells_[a])
@@ -220,40 +114,127 @@ void appendTriangle(const flt::Part& part, std::size_t t, std::vector<std::uint3
         piece.triangleColors.push_back(part.triangleColors[t]);
 }
 
-// A level's triangles in each cell they go to, every part with its own vertex pool.
-std::map<int, SupportedLevel> splitLevel(const SupportedLevel& in, const ChunkGrid& grid, const FinestTriangles& finest)
+// One cell's triangles of a level being split, every part with its own vertex pool.
+class CellLevel {
+public:
+    SupportedLevel level;
+
+    // Appends triangle `t` of part `p` of `from`, clipped to `box` unless null, standing for
+    // the finest triangles [support, supportEnd).
+    void append(const SupportedLevel& from, std::size_t p, std::size_t t, const Box3* box,
+                const std::uint32_t* support, const std::uint32_t* supportEnd)
+    {
+        const flt::Part& part = from.level.parts[p];
+        if (p != lastPart_) {
+            lastPart_ = p;
+            remap_.assign(part.positions.size(), std::numeric_limits<std::uint32_t>::max());
+            flt::Part copy;
+            static_cast<PartIdentity&>(copy) = part;
+            level.level.parts.push_back(std::move(copy));
+            level.support.emplace_back();
+        }
+        flt::Part& piece = level.level.parts.back();
+        const std::size_t before = piece.triangles.size();
+        if (box)
+            appendClippedTriangle(part, t, *box, piece);
+        else
+            appendTriangle(part, t, remap_, piece);
+        SupportedLevel::Support& kept = level.support.back();
+        for (std::size_t i = before; i < piece.triangles.size(); ++i) {
+            kept.finest.insert(kept.finest.end(), support, supportEnd);
+            kept.start.push_back(std::uint32_t(kept.finest.size()));
+        }
+    }
+
+private:
+    std::size_t lastPart_ = std::numeric_limits<std::size_t>::max();
+    std::vector<std::uint32_t> remap_;
+};
+
+Box3 boxOf(const flt::Part& part, const flt::Triangle& t)
 {
-    std::map<int, SupportedLevel> cells;
-    std::vector<int> to;
-    for (std::size_t p = 0; p < in.level.parts.size(); ++p) {
-        const flt::Part& part = in.level.parts[p];
-        const SupportedLevel::Support& support = in.support[p];
-        std::map<int, std::vector<std::uint32_t>> remaps;
+    Box3 b;
+    for (int k = 0; k < 3; ++k)
+        b.add(part.positions[t[k]]);
+    return b;
+}
+
+bool holds(const Box3& outer, const Box3& inner)
+{
+    for (int i = 0; i < 3; ++i)
+        if (inner.lo[i] < outer.lo[i] || inner.hi[i] > outer.hi[i])
+            return false;
+    return true;
+}
+
+// The finest level's triangles in their cells.
+std::map<int, SupportedLevel> splitFinest(const SupportedLevel& finestLevel, const ChunkGrid& grid,
+                                          const FinestTriangles& finest)
+{
+    std::map<int, CellLevel> cells;
+    for (std::size_t p = 0; p < finestLevel.level.parts.size(); ++p) {
+        const SupportedLevel::Support& support = finestLevel.support[p];
+        for (std::size_t t = 0; t + 1 < support.start.size(); ++t) {
+            const std::uint32_t* own = support.finest.data() + support.start[t];
+            cells[grid.cellOf(finest, *own)].append(finestLevel, p, t, nullptr, own, own + 1);
+        }
+    }
+    std::map<int, SupportedLevel> out;
+    for (auto& entry : cells)
+        out[entry.first] = std::move(entry.second.level);
+    return out;
+}
+
+// `box` grown by `error` on every side, and by a hair for the rounding of coordinates: the
+// coarse surface of a face on the box's side may stand that far out of it.
+Box3 grown(Box3 box, double error)
+{
+    const double margin = kClipErrorSlack * error + kClipRounding * box.halfDiagonal();
+    for (int a = 0; a < 3; ++a) {
+        box.lo[a] -= margin;
+        box.hi[a] += margin;
+    }
+    return box;
+}
+
+// A coarse level's triangles in the cells of the finest triangles each stands for, standing
+// there for those alone: whole in the long cell; elsewhere cut to the box of the cell's finest
+// triangles (`finestBoxes`) grown by the level's error, so that the cell's coarse level
+// covers its finest level's surface and reaches no farther.
+std::map<int, SupportedLevel> splitCoarse(const SupportedLevel& coarse, const ChunkGrid& grid,
+                                          const FinestTriangles& finest, const std::map<int, Box3>& finestBoxes)
+{
+    std::map<int, CellLevel> cells;
+    std::vector<std::pair<int, std::uint32_t>> byCell;  // (cell, finest triangle)
+    std::vector<std::uint32_t> standsFor;
+    for (std::size_t p = 0; p < coarse.level.parts.size(); ++p) {
+        const flt::Part& part = coarse.level.parts[p];
+        const SupportedLevel::Support& support = coarse.support[p];
         for (std::size_t t = 0; t < part.triangles.size(); ++t) {
-            to.clear();
-            for (std::uint32_t s = support.start[t]; s < support.start[t + 1]; ++s)
-                to.push_back(grid.cellOf(finest, support.finest[s]));
-            std::sort(to.begin(), to.end());
-            to.erase(std::unique(to.begin(), to.end()), to.end());
-            for (int cell : to) {
-                SupportedLevel& out = cells[cell];
-                std::vector<std::uint32_t>& remap = remaps[cell];
-                if (remap.empty()) {
-                    remap.assign(part.positions.size(), std::numeric_limits<std::uint32_t>::max());
-                    flt::Part copy;
-                    static_cast<PartIdentity&>(copy) = part;
-                    out.level.parts.push_back(std::move(copy));
-                    out.support.emplace_back();
-                }
-                appendTriangle(part, t, remap, out.level.parts.back());
-                SupportedLevel::Support& kept = out.support.back();
-                kept.finest.insert(kept.finest.end(), support.finest.begin() + support.start[t],
-                                   support.finest.begin() + support.start[t + 1]);
-                kept.start.push_back(std::uint32_t(kept.finest.size()));
+            byCell.clear();
+            for (std::uint32_t s = support.start[t]; s < support.start[t + 1]; ++s) {
+                const int cell = grid.cellOf(finest, support.finest[s]);
+                if (finestBoxes.count(cell))  // not kOutside
+                    byCell.emplace_back(cell, support.finest[s]);
+            }
+            std::sort(byCell.begin(), byCell.end());
+            const Box3 box = boxOf(part, part.triangles[t]);
+            for (std::size_t i = 0; i < byCell.size();) {
+                const int cell = byCell[i].first;
+                standsFor.clear();
+                for (; i < byCell.size() && byCell[i].first == cell; ++i)
+                    standsFor.push_back(byCell[i].second);
+                const Box3 cellBox = grown(finestBoxes.at(cell), coarse.error);
+                const bool whole = cell == ChunkGrid::kLongCell || holds(cellBox, box);
+                cells[cell].append(coarse, p, t, whole ? nullptr : &cellBox, standsFor.data(),
+                                   standsFor.data() + standsFor.size());
             }
         }
     }
-    return cells;
+    std::map<int, SupportedLevel> out;
+    for (auto& entry : cells)
+        out[entry.first] = std::move(entry.second.level);
+    return out;
 }
 
 // Whether the first simplified level of a node of this reach waits for the nearest-point
@@ -324,13 +305,16 @@ std::vector<flt::PartChunk> cut(const FinestTriangles& finest, const std::vector
                                 double drawnTo)
 {
     const ChunkGrid grid(box, how.perAxis);
-    std::vector<std::map<int, SupportedLevel>> split;
+    std::vector<std::map<int, SupportedLevel>> split{splitFinest(levels.front(), grid, finest)};
+    std::map<int, Box3> finestBoxes;
+    for (const auto& entry : split.front())
+        finestBoxes[entry.first] = boxOf(entry.second.level);
+    for (std::size_t k = 1; k < levels.size(); ++k)
+        split.push_back(splitCoarse(levels[k], grid, finest, finestBoxes));
     std::map<int, bool> cells;
-    for (const SupportedLevel& level : levels) {
-        split.push_back(splitLevel(level, grid, finest));
-        for (const auto& entry : split.back())
+    for (const auto& level : split)
+        for (const auto& entry : level)
             cells[entry.first] = true;
-    }
     const double pieces = double(split.front().size());
     if (pieces < 2 || double(levels.front().level.triangleCount()) < how.leastEach * pieces)
         return {};
@@ -340,6 +324,7 @@ std::vector<flt::PartChunk> cut(const FinestTriangles& finest, const std::vector
         for (std::size_t k = 0; k < levels.size(); ++k) {
             const auto found = split[k].find(entry.first);
             SupportedLevel l = found != split[k].end() ? std::move(found->second) : SupportedLevel{};
+            l.error = levels[k].error;
             l.level.switchIn = levels[k].level.switchIn;
             l.level.switchOut = levels[k].level.switchOut;
             chain.push_back(std::move(l));
@@ -352,10 +337,10 @@ std::vector<flt::PartChunk> cut(const FinestTriangles& finest, const std::vector
 
 }  // namespace
 
-std::vector<flt::PartChunk> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius,
-                                        double drawnTo)
+std::vector<flt::PartChunk> chunkLevels(const std::vector<flt::Level>& levels, const std::vector<double>& errors,
+                                        double smallestRadius, double drawnTo)
 {
-    if (levels.size() < 2)
+    if (levels.size() < 2 || errors.size() != levels.size())
         return {};
     const Box3 box = boxOf(levels.front());
     const double radius = levels.front().reachFrom(box.center());
@@ -368,8 +353,8 @@ std::vector<flt::PartChunk> chunkLevels(const std::vector<flt::Level>& levels, d
         if (drawable.size() < 2 || level.switchOut < drawnTo + radius)
             drawable.push_back(level);
     const FinestTriangles finest(levels.front());
-    return cut(finest, supported(drawable, finest), box, kChunkCut, levels.front().name, levels.front().center,
-               drawnTo);
+    return cut(finest, supported(drawable, errors, finest), box, kChunkCut, levels.front().name,
+               levels.front().center, drawnTo);
 }
 
 std::size_t chunkCount(const std::vector<flt::PartChunk>& chunks)

@@ -7,8 +7,9 @@
 // triangles longer than a chunk (a face's slivers, a plate's two triangles) are a chunk of
 // their own: taken by a cell, one of them would hold that cell's whole chunk back to the
 // part's own reach. A coarse triangle goes to every chunk whose finest triangles it stands
-// for, so each chunk's levels cover the surface its finest level does: where two chunks show
-// different levels they overlap, and open no hole. Nearer than where its own first
+// for, cut to the box of the chunk's finest triangles grown by the level's error: each
+// chunk's levels cover the surface its finest level does and reach no farther, and where two
+// chunks show different levels they overlap, but open no hole. Nearer than where its own first
 // simplified level holds, a chunk is cut again the same way: wherever the viewer stands, the
 // pieces about them are small enough to coarsen at the distance they are seen from. The
 // levels are the part's own chain, simplified whole: only the switch distances are the
@@ -44,8 +45,9 @@ inline constexpr std::size_t kLeastChunkTriangles = 64;
 // held at its nearest point, takes over): a chunk keeps the levels it shows there. Empty
 // when chunks would not let any level switch nearer, the part's radius is below
 // `smallestRadius`, or its chunks would hold fewer than kLeastChunkTriangles each.
-std::vector<flt::PartChunk> chunkLevels(const std::vector<flt::Level>& levels, double smallestRadius,
-                                        double drawnTo);
+// `errors[k]`: how far level k stands from the finest at most (its Hausdorff distance).
+std::vector<flt::PartChunk> chunkLevels(const std::vector<flt::Level>& levels, const std::vector<double>& errors,
+                                        double smallestRadius, double drawnTo);
 
 // How many chunks `chunks` hold, at every depth.
 std::size_t chunkCount(const std::vector<flt::PartChunk>& chunks);

@@ -37,6 +37,12 @@ flt::Level strip(int cells, double switchOut, double switchIn)
     return level;
 }
 
+// The errors of levels that lie in their finest level's plane.
+std::vector<double> exact(const std::vector<flt::Level>& levels)
+{
+    return std::vector<double>(levels.size(), 0.0);
+}
+
 // A plate 1 m by 0.5 m, 0.1 m below the strip, in two triangles.
 flt::Level withPlate(flt::Level level)
 {
@@ -94,7 +100,7 @@ void expectEveryLevelCoversItsFinest(const flt::PartChunk& chunk)
 TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
 {
     const std::vector<flt::Level> levels{strip(256, 0, 1.0), strip(16, 1.0, 4.0), strip(4, 4.0, 1e30)};
-    const auto chunks = chunkLevels(levels, 0.0, kNeverCulled);
+    const auto chunks = chunkLevels(levels, exact(levels), 0.0, kNeverCulled);
     ASSERT_EQ(chunks.size(), 4u);  // four along x; the strip is flat in y and z
     for (std::size_t k = 0; k < levels.size(); ++k) {
         std::size_t triangles = 0;
@@ -112,13 +118,13 @@ TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
         EXPECT_DOUBLE_EQ(chunk.levels[0].switchIn, chunk.levels[1].switchOut);
         EXPECT_LT(chunk.levels[1].switchOut, switchAtNearestPoint(1.0, wholeReach) / 2);
     }
-    EXPECT_TRUE(chunkLevels(levels, 1.0, kNeverCulled).empty());  // smaller than the smallest part cut
+    EXPECT_TRUE(chunkLevels(levels, exact(levels), 1.0, kNeverCulled).empty());  // smaller than the smallest part cut
 
     // Drawn only while the eye is nearer than the whole part's first simplified level (held at
     // its nearest point) to its centre, a chunk keeps the levels it shows there: level 2,
     // from 4.1 m off a chunk's centre, never is within 3.4 m of it.
     const double drawnTo = switchAtNearestPoint(1.0, wholeReach);
-    for (const auto& chunk : chunkLevels(levels, 0.0, drawnTo)) {
+    for (const auto& chunk : chunkLevels(levels, exact(levels), 0.0, drawnTo)) {
         ASSERT_EQ(chunk.levels.size(), 2u);
         EXPECT_LT(chunk.levels[1].switchOut, drawnTo);
         EXPECT_GE(chunk.levels[1].switchIn, kNeverCulled);
@@ -128,7 +134,7 @@ TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
     // four draw calls where one draws it all.
     const std::vector<flt::Level> few{strip(64, 0, 1.0), strip(16, 1.0, 4.0), strip(4, 4.0, 1e30)};
     EXPECT_LT(few.front().triangleCount(), 4 * kLeastChunkTriangles);
-    EXPECT_TRUE(chunkLevels(few, 0.0, kNeverCulled).empty());
+    EXPECT_TRUE(chunkLevels(few, exact(few), 0.0, kNeverCulled).empty());
 }
 
 namespace {
@@ -149,8 +155,9 @@ void walk(const std::vector<flt::PartChunk>& chunks, double drawnTo, std::size_t
         EXPECT_GE(chunk.levels.back().switchIn, kNeverCulled);
         EXPECT_LT(chunk.levels.front().switchOut, drawnTo);
         for (const flt::Level& level : chunk.levels) {  // held at its own nearest point
-            if (level.switchOut > 0)
+            if (level.switchOut > 0) {
                 EXPECT_GE(level.switchOut, kNearestPointReach * level.reachFrom(level.center) * (1 - 1e-9));
+            }
         }
         if (chunk.children.empty()) {
             EXPECT_EQ(chunk.levels.front().switchOut, 0.0);
@@ -182,7 +189,7 @@ TEST(PartChunks, AChunkWaitingForTheNearestPointFloorIsCutAgain)
     const std::vector<flt::Level> levels{strip(4096, 0, 0.01), strip(256, 0.01, 4.0), strip(4, 4.0, 1e30)};
     const double wholeReach = std::hypot(0.5, 0.005);
     const double drawnTo = switchAtNearestPoint(0.01, wholeReach);
-    const std::vector<flt::PartChunk> chunks = chunkLevels(levels, 0.0, drawnTo);
+    const std::vector<flt::PartChunk> chunks = chunkLevels(levels, exact(levels), 0.0, drawnTo);
     ASSERT_EQ(chunks.size(), 4u);
     ChunkTally tally;
     walk(chunks, drawnTo, 0, tally);
@@ -205,7 +212,7 @@ TEST(PartChunks, LongTrianglesAndWhatStandsForThemAreAChunkOfTheirOwn)
 {
     const std::vector<flt::Level> levels{withPlate(strip(1024, 0, 1.0)), withPlate(strip(64, 1.0, 4.0)),
                                          withPlate(strip(2, 4.0, 1e30))};
-    const std::vector<flt::PartChunk> chunks = chunkLevels(levels, 0.0, kNeverCulled);
+    const std::vector<flt::PartChunk> chunks = chunkLevels(levels, exact(levels), 0.0, kNeverCulled);
     ASSERT_EQ(chunks.size(), 5u);  // four along the strip, and the plate
     std::size_t longChunks = 0, finest = 0;
     for (const flt::PartChunk& chunk : chunks) {
@@ -229,16 +236,20 @@ TEST(PartChunks, LongTrianglesAndWhatStandsForThemAreAChunkOfTheirOwn)
 
 // A coarse triangle across a chunk border stands for finest triangles on both sides. Given to
 // the chunk of its centroid alone, it would leave a hole in its neighbour wherever the
-// neighbour shows that level and the chunk of its centroid still its finest: it is in both.
-TEST(PartChunks, ACoarseTriangleAcrossABorderIsInEveryChunkItStandsFor)
+// neighbour shows that level and the chunk of its centroid still its finest: it is in both,
+// each time cut to the chunk's box, which its coarse levels then reach no farther than.
+TEST(PartChunks, ACoarseTriangleAcrossABorderIsInEveryChunkItStandsForCutToItsBox)
 {
     const std::vector<flt::Level> levels{strip(1024, 0, 1.0), strip(3, 1.0, 4.0), strip(1, 4.0, 1e30)};
-    const std::vector<flt::PartChunk> chunks = chunkLevels(levels, 0.0, kNeverCulled);
+    const std::vector<flt::PartChunk> chunks = chunkLevels(levels, exact(levels), 0.0, kNeverCulled);
     ASSERT_EQ(chunks.size(), 4u);
     std::size_t finest = 0;
     for (const flt::PartChunk& chunk : chunks) {
         finest += chunk.levels.front().triangleCount();
         expectEveryLevelCoversItsFinest(chunk);
+        const flt::Vec3d& centre = chunk.levels.front().center;
+        for (const flt::Level& level : chunk.levels)
+            EXPECT_LE(level.reachFrom(centre), chunk.levels.front().reachFrom(centre) * (1 + 1e-3)) << level.name;
     }
     EXPECT_EQ(finest, levels.front().triangleCount());  // each finest triangle in one chunk
 }
