@@ -15,7 +15,7 @@
 
 namespace {
 
-// Counts the non-degenerate triangles of one geometry, keeping their centroids when asked.
+// Counts the triangles of one geometry that have an area, keeping their centroids when asked.
 struct TriangleSink {
     const osg::Vec3Array* vertices = nullptr;
     osg::Matrixd toWorld;
@@ -24,7 +24,9 @@ struct TriangleSink {
 
     void operator()(unsigned a, unsigned b, unsigned c)
     {
-        if (a == b || b == c || a == c)
+        // Two corners at one point: a triangle strip's join, no triangle drawn.
+        const osg::Vec3 &pa = (*vertices)[a], &pb = (*vertices)[b], &pc = (*vertices)[c];
+        if (pa == pb || pb == pc || pa == pc)
             return;
         ++triangles;
         if (centroids) {

@@ -19,10 +19,27 @@
 namespace cadlod::test {
 namespace {
 
+// Counts the triangles of a geometry (its vertex array `vertices`) that have an area: not
+// those with two corners at one point, such as a triangle strip's joins.
 struct Count {
+    const osg::Vec3Array* vertices = nullptr;
     std::size_t triangles = 0;
-    void operator()(unsigned a, unsigned b, unsigned c) { triangles += (a != b && b != c && a != c); }
+    void operator()(unsigned a, unsigned b, unsigned c)
+    {
+        const osg::Vec3 &pa = (*vertices)[a], &pb = (*vertices)[b], &pc = (*vertices)[c];
+        triangles += (pa != pb && pb != pc && pa != pc);
+    }
 };
+
+std::size_t trianglesOf(const osg::Geometry& g)
+{
+    osg::TriangleIndexFunctor<Count> count;
+    count.vertices = dynamic_cast<const osg::Vec3Array*>(g.getVertexArray());
+    if (!count.vertices)
+        return 0;
+    g.accept(count);
+    return count.triangles;
+}
 
 // A geometry's triangles as corner indices.
 struct Corners {
@@ -185,9 +202,7 @@ private:
             return;
         if (drawn_)
             appendTriangles(g, matrices_.back(), *drawn_);
-        osg::TriangleIndexFunctor<Count> count;
-        g.accept(count);
-        view.triangles += count.triangles;
+        view.triangles += trianglesOf(g);
         ++view.drawables;
         view.proxyDrawables += proxyDepth_ > 0 ? 1 : 0;
         const double s = switchedIn_.back();
@@ -247,11 +262,8 @@ public:
     void apply(osg::Geode& geode) override
     {
         for (unsigned i = 0; i < geode.getNumDrawables(); ++i)
-            if (const osg::Geometry* g = geode.getDrawable(i)->asGeometry()) {
-                osg::TriangleIndexFunctor<Count> count;
-                g->accept(count);
-                triangles += count.triangles;
-            }
+            if (const osg::Geometry* g = geode.getDrawable(i)->asGeometry())
+                triangles += trianglesOf(*g);
     }
     std::size_t triangles = 0;
 };
