@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -340,7 +341,9 @@ std::vector<flt::PartChunk> cut(const FinestTriangles& finest, const std::vector
 std::vector<flt::PartChunk> chunkLevels(const std::vector<flt::Level>& levels, const std::vector<double>& errors,
                                         double smallestRadius, double drawnTo)
 {
-    if (levels.size() < 2 || errors.size() != levels.size())
+    if (errors.size() != levels.size())
+        throw std::logic_error("chunkLevels: one error per level");
+    if (levels.size() < 2)
         return {};
     const Box3 box = boxOf(levels.front());
     const double radius = levels.front().reachFrom(box.center());
