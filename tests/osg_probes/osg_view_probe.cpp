@@ -250,24 +250,6 @@ private:
     std::set<const osg::Group*> seen_;
 };
 
-class FinestCounter : public osg::NodeVisitor {
-public:
-    FinestCounter() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) {}
-    void apply(osg::LOD& lod) override
-    {
-        for (unsigned i = 0; i < lod.getNumChildren() && i < lod.getNumRanges(); ++i)
-            if (lod.getMinRange(i) <= 0 && lod.getMaxRange(i) > 0)
-                lod.getChild(i)->accept(*this);
-    }
-    void apply(osg::Geode& geode) override
-    {
-        for (unsigned i = 0; i < geode.getNumDrawables(); ++i)
-            if (const osg::Geometry* g = geode.getDrawable(i)->asGeometry())
-                triangles += trianglesOf(*g);
-    }
-    std::size_t triangles = 0;
-};
-
 // The finest geometry's triangles, placed: every LOD node at its child drawn from up close.
 class FinestTriangles : public osg::NodeVisitor {
 public:
@@ -349,9 +331,9 @@ std::vector<OsgLodRanges> OsgViewProbe::lodNodes() const
 
 std::size_t OsgViewProbe::finestTriangles() const
 {
-    FinestCounter c;
-    impl_->root->accept(c);
-    return c.triangles;
+    FinestTriangles finest;
+    impl_->root->accept(finest);
+    return finest.triangles.size();
 }
 
 std::vector<Point3> OsgViewProbe::finestSamples(std::size_t most) const
