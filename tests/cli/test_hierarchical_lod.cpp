@@ -175,6 +175,22 @@ std::vector<Point3> eyePoints(const std::array<Point3, 2>& box)
     return eyes;
 }
 
+// Seen from each of `eyes`, no point of the finest level of `osg` is farther from what is
+// drawn than the error bound (5 % slack for the samples): where neighbouring nodes show
+// different levels, none leaves a hole.
+void expectNoHoles(const OsgViewProbe& osg, const std::vector<Point3>& eyes)
+{
+    const ViewParams defaults;
+    const double pixelRadians = 2 * std::tan(defaults.fovYDegrees * M_PI / 360) / defaults.viewportHeightPx;
+    const std::vector<Point3> samples = osg.finestSamples(20000);
+    ASSERT_GT(samples.size(), 10000u);
+    for (const Point3& eye : eyes) {
+        const OsgGaps gaps = osg.gapsFrom(eye, samples, pixelRadians, kApparentErrorBound * 1.05);
+        EXPECT_EQ(gaps.wider, 0u) << "widest gap " << gaps.widestPx << " px from " << eye[0] << " " << eye[1] << " "
+                                  << eye[2];
+    }
+}
+
 // Seen from `eye`, every placement of the grid is drawn exactly once (by itself or by a
 // proxy), and no drawn level shows more than the bound.
 void expectEveryPlacementOnceWithinTheBound(const OsgView& view, const Point3& eye)
@@ -326,19 +342,11 @@ TEST(CliHierarchicalLod, AFileThatSharesNothingIsClusteredByItsParts)
     const OsgViewProbe osg(dir + "/parts.flt", "parts");
     ASSERT_TRUE(osg.loaded());
     std::size_t farDrawables = 0;
-    // Where neighbouring chunks show different levels, none leaves a hole: every point of the
-    // finest level is within the error bound of what is drawn (5 % slack for the samples).
-    const ViewParams defaults;
-    const double pixelRadians = 2 * std::tan(defaults.fovYDegrees * M_PI / 360) / defaults.viewportHeightPx;
-    const std::vector<Point3> samples = osg.finestSamples(20000);
-    ASSERT_GT(samples.size(), 10000u);
     const std::vector<Point3> eyes = eyePoints(osg.bounds());
+    expectNoHoles(osg, eyes);
     for (const Point3& eye : eyes) {
         const OsgView view = osg.drawFrom(eye);
         EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9));
-        const OsgGaps gaps = osg.gapsFrom(eye, samples, pixelRadians, kApparentErrorBound * 1.05);
-        EXPECT_EQ(gaps.wider, 0u) << "widest gap " << gaps.widestPx << " px from " << eye[0] << " " << eye[1] << " "
-                                  << eye[2];
         EXPECT_EQ(view.drawnPlacements.size(), 32u);
         farDrawables = view.drawables;
     }
@@ -497,6 +505,28 @@ TEST(CliHierarchicalLod, AFileOfOnePartHoldsTheBoundNearItAndIsOneDrawableFarOff
     for (const Point3& eye : eyePoints(oneNode.bounds()))
         worst = std::max(worst, oneNode.drawFrom(eye).worstApparentPx);
     EXPECT_GT(worst, kApparentErrorBound);
+}
+
+// The bundled sample: CAD parts whose faces are triangulated as slivers across their width,
+// a plate of 12 triangles in one part with a finely tessellated shaft. Their long triangles
+// are chunks of their own, and wherever the eye is, the chunks leave no hole and no drawn
+// level shows more than the bound.
+TEST(CliHierarchicalLod, TheSamplesChunksLeaveNoHoleWhereverTheEyeIs)
+{
+    const std::string dir = freshDirectory("hlod_sample");
+    const std::string output = dir + "/sample.flt";
+    const CliRun run = runCadlod({"convert", std::string(CADLOD_SOURCE_DIR) + "/docs/sample/cad_assembly.wrl.gz", "-o",
+                                  output, "--unit", "mm", "--report", dir + "/sample.json"});
+    ASSERT_EQ(run.exitCode, 0) << run.stderrText;
+    const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/sample.json"));
+    EXPECT_GE(report.at("hlod").at("chunkedParts").get<int>(), 2);
+    EXPECT_NE(readFile(output).find("chunk long"), std::string::npos);
+    const OsgViewProbe osg(output, "sample");
+    ASSERT_TRUE(osg.loaded());
+    const std::vector<Point3> eyes = eyePoints(osg.bounds());
+    expectNoHoles(osg, eyes);
+    for (const Point3& eye : eyes)
+        EXPECT_LE(osg.drawFrom(eye).worstApparentPx, kApparentErrorBound * (1 + 1e-9));
 }
 
 // The parts' chains and the clusters' proxies run at once on several threads; what they make
