@@ -8,7 +8,6 @@
 #include "lod/nearest_point.h"
 
 #include <algorithm>
-#include <cmath>
 #include <map>
 #include <stdexcept>
 
@@ -262,7 +261,7 @@ private:
                 return 0.0;
             const Box3& parent = nodes_[parent_[c]].box;
             const double takeOver = kParentTakeOverMargin * switchAtNearestPoint(0.0, parent.halfDiagonal()) +
-                                    distance(parent.center(), work_[c].centre);
+                                    flt::distance(parent.center(), work_[c].centre);
             farthest =
                 std::max(farthest, takeOver - work_[c].radius - projectedErrorDistance(inputError, options_.view));
         }
@@ -295,7 +294,7 @@ private:
         const double first = switchAtNearestPoint(0.0, work_[n].radius);
         const double parentFirst = n == 0 ? first
                                           : switchAtNearestPoint(0.0, work_[parent_[n]].radius) +
-                                                distance(work_[parent_[n]].centre, work_[n].centre);
+                                                flt::distance(work_[parent_[n]].centre, work_[n].centre);
         for (double from = first; from == first || from < parentFirst; from *= kMergedCandidateStep)
             addMergedCandidate(n, from);
     }
@@ -320,11 +319,11 @@ private:
         for (std::size_t p : nodes_[m].items) {
             const flt::PartPlacement& placement = c_.model.placements[p];
             const flt::Level& finest = c_.model.definitions[placement.definition].levels.front();
-            const double offset = distance(centre, flt::transformed(placement.matrix, finest.center));
+            const double offset = flt::distance(centre, flt::transformed(placement.matrix, finest.center));
             addPlacedLevel(placement, levelIndexAt(placement, std::max(0.0, from - offset)), merger, error);
         }
         for (std::size_t child : nodes_[m].children) {
-            const Candidate* proxy = drawnProxy(child, from - distance(centre, work_[child].centre));
+            const Candidate* proxy = drawnProxy(child, from - flt::distance(centre, work_[child].centre));
             if (!proxy) {
                 collectAt(child, centre, from, merger, error);
                 continue;
@@ -527,7 +526,7 @@ private:
         const double below = out.proxies.empty() ? cutoff : out.nearRange();
         for (std::size_t i = 0; i < nodes_[n].children.size(); ++i) {
             const std::size_t child = nodes_[n].children[i];
-            placeCluster(child, below + distance(work_[n].centre, work_[child].centre),
+            placeCluster(child, below + flt::distance(work_[n].centre, work_[child].centre),
                          name + "." + std::to_string(i + 1));
         }
     }
@@ -561,11 +560,6 @@ private:
             c_.model.proxyShapes.push_back(std::move(shape));
         }
         return at->second;
-    }
-
-    static double distance(const Vec3d& a, const Vec3d& b)
-    {
-        return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
     }
 
     AssemblyConversion& c_;

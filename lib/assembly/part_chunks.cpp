@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -31,14 +30,6 @@ Box3 boxOf(const flt::Level& level)
         for (const flt::Vec3d& p : part.positions)
             b.add(p);
     return b;
-}
-
-double distance(const flt::Vec3d& a, const flt::Vec3d& b)
-{
-    double squared = 0;
-    for (int i = 0; i < 3; ++i)
-        squared += (a[i] - b[i]) * (a[i] - b[i]);
-    return std::sqrt(squared);
 }
 
 // A grid over a node's box. A finest triangle goes to the cell of its centroid, unless it is
@@ -205,6 +196,9 @@ Box3 grown(Box3 box, double error)
 std::map<int, SupportedLevel> splitCoarse(const SupportedLevel& coarse, const ChunkGrid& grid,
                                           const FinestTriangles& finest, const std::map<int, Box3>& finestBoxes)
 {
+    std::map<int, Box3> clipBoxes;
+    for (const auto& [cell, box] : finestBoxes)
+        clipBoxes[cell] = grown(box, coarse.error);
     std::map<int, CellLevel> cells;
     std::vector<std::pair<int, std::uint32_t>> byCell;  // (cell, finest triangle)
     std::vector<std::uint32_t> standsFor;
@@ -215,7 +209,7 @@ std::map<int, SupportedLevel> splitCoarse(const SupportedLevel& coarse, const Ch
             byCell.clear();
             for (std::uint32_t s = support.start[t]; s < support.start[t + 1]; ++s) {
                 const int cell = grid.cellOf(finest, support.finest[s]);
-                if (finestBoxes.count(cell))  // not kOutside
+                if (clipBoxes.count(cell))  // not kOutside
                     byCell.emplace_back(cell, support.finest[s]);
             }
             std::sort(byCell.begin(), byCell.end());
@@ -225,7 +219,7 @@ std::map<int, SupportedLevel> splitCoarse(const SupportedLevel& coarse, const Ch
                 standsFor.clear();
                 for (; i < byCell.size() && byCell[i].first == cell; ++i)
                     standsFor.push_back(byCell[i].second);
-                const Box3 cellBox = grown(finestBoxes.at(cell), coarse.error);
+                const Box3& cellBox = clipBoxes.at(cell);
                 const bool whole = cell == ChunkGrid::kLongCell || holds(cellBox, box);
                 cells[cell].append(coarse, p, t, whole ? nullptr : &cellBox, standsFor.data(),
                                    standsFor.data() + standsFor.size());
@@ -263,15 +257,10 @@ std::vector<flt::PartChunk> cut(const FinestTriangles& finest, const std::vector
 // than `drawnTo` to `ownerCentre`: each level from where it holds at the chunk's nearest
 // point, up to the last one drawn there; nearer than its first simplified level, its own
 // pieces where they could coarsen sooner.
-flt::PartChunk makeChunk(const FinestTriangles& finest, std::vector<SupportedLevel> chain, const std::string& name,
-                         const flt::Vec3d& ownerCentre, double drawnTo)
+// `box` bounds its finest level: it is centred on what it draws nearest the viewer.
+flt::PartChunk makeChunk(const FinestTriangles& finest, std::vector<SupportedLevel> chain, const Box3& box,
+                         const std::string& name, const flt::Vec3d& ownerCentre, double drawnTo)
 {
-    // Centred on what it draws nearest the viewer: a coarse level's few long triangles, drawn
-    // only from farther, would move its centre and widen its finest level's reach.
-    Box3 box = boxOf(chain.front().level);
-    if (chain.front().level.triangleCount() == 0)
-        for (const SupportedLevel& s : chain)
-            box.add(boxOf(s.level));
     const flt::Vec3d centre = box.center();
     std::vector<flt::Level> levels;
     std::vector<double> reach;
@@ -284,7 +273,7 @@ flt::PartChunk makeChunk(const FinestTriangles& finest, std::vector<SupportedLev
     }
     std::vector<flt::Level> held = levels;
     holdAtNearestPoint(held, reach);
-    const double farthest = drawnTo + distance(centre, ownerCentre);
+    const double farthest = drawnTo + flt::distance(centre, ownerCentre);
     flt::PartChunk chunk;
     if (held.size() > 1 && held[1].switchOut < farthest && coarsensLate(levels, reach.front()))
         chunk.children = cut(finest, chain, box, kSubchunkCut, name, centre, held[1].switchOut);
@@ -310,17 +299,14 @@ std::vector<flt::PartChunk> cut(const FinestTriangles& finest, const std::vector
     std::map<int, Box3> finestBoxes;
     for (const auto& entry : split.front())
         finestBoxes[entry.first] = boxOf(entry.second.level);
-    for (std::size_t k = 1; k < levels.size(); ++k)
-        split.push_back(splitCoarse(levels[k], grid, finest, finestBoxes));
-    std::map<int, bool> cells;
-    for (const auto& level : split)
-        for (const auto& entry : level)
-            cells[entry.first] = true;
-    const double pieces = double(split.front().size());
+    const double pieces = double(finestBoxes.size());
     if (pieces < 2 || double(levels.front().level.triangleCount()) < how.leastEach * pieces)
         return {};
+    for (std::size_t k = 1; k < levels.size(); ++k)
+        split.push_back(splitCoarse(levels[k], grid, finest, finestBoxes));
+    // Every chunk is a cell of the finest level: the coarse levels go only to those.
     std::vector<flt::PartChunk> chunks;
-    for (const auto& entry : cells) {
+    for (const auto& entry : finestBoxes) {
         std::vector<SupportedLevel> chain;
         for (std::size_t k = 0; k < levels.size(); ++k) {
             const auto found = split[k].find(entry.first);
@@ -331,7 +317,8 @@ std::vector<flt::PartChunk> cut(const FinestTriangles& finest, const std::vector
             chain.push_back(std::move(l));
         }
         const std::string cell = entry.first == ChunkGrid::kLongCell ? "long" : std::to_string(entry.first);
-        chunks.push_back(makeChunk(finest, std::move(chain), name + how.separator + cell, ownerCentre, drawnTo));
+        chunks.push_back(
+            makeChunk(finest, std::move(chain), entry.second, name + how.separator + cell, ownerCentre, drawnTo));
     }
     return chunks;
 }
@@ -352,9 +339,11 @@ std::vector<flt::PartChunk> chunkLevels(const std::vector<flt::Level>& levels, c
     // A chunk is drawn only while the eye is nearer than drawnTo to the part's centre, so within
     // drawnTo + radius of its own: the levels switched in only farther are never its.
     std::vector<flt::Level> drawable;
-    for (const flt::Level& level : levels)
-        if (drawable.size() < 2 || level.switchOut < drawnTo + radius)
-            drawable.push_back(level);
+    for (const flt::Level& level : levels) {
+        if (drawable.size() >= 2 && level.switchOut >= drawnTo + radius)
+            break;
+        drawable.push_back(level);
+    }
     const FinestTriangles finest(levels.front());
     return cut(finest, supported(drawable, errors, finest), box, kChunkCut, levels.front().name,
                levels.front().center, drawnTo);

@@ -28,6 +28,11 @@ Vec3d transformed(const Mat4d& m, const Vec3d& p)
     return out;
 }
 
+double distance(const Vec3d& a, const Vec3d& b)
+{
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+}
+
 double determinant3(const Mat4d& m)
 {
     return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +

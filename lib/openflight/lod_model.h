@@ -24,6 +24,7 @@ using Mat4d = std::array<std::array<double, 4>, 4>;  // [row][column], p' = M p
 Mat4d multiply(const Mat4d& a, const Mat4d& b);  // a b: b applied first
 Mat4d translationMatrix(const Vec3d& t);          // moves every point by t
 Vec3d transformed(const Mat4d& m, const Vec3d& p);  // the point p placed by m
+double distance(const Vec3d& a, const Vec3d& b);    // between two points
 Mat4d inverse(const Mat4d& m);                   // an affine placement undone (its 3x3 part invertible)
 double determinant3(const Mat4d& m);             // of the 3x3 part: negative for a mirror
 bool turns(const Mat4d& m);                      // its 3x3 part is not exactly the identity
