@@ -87,20 +87,8 @@ private:
 void appendTriangle(const flt::Part& part, std::size_t t, std::vector<std::uint32_t>& remap, flt::Part& piece)
 {
     flt::Triangle tri{};
-    for (int k = 0; k < 3; ++k) {
-        const std::uint32_t v = part.triangles[t][k];
-        if (remap[v] == std::numeric_limits<std::uint32_t>::max()) {
-            remap[v] = std::uint32_t(piece.positions.size());
-            piece.positions.push_back(part.positions[v]);
-            if (part.hasNormals())
-                piece.normals.push_back(part.normals[v]);
-            if (part.hasUvs())
-                piece.uvs.push_back(part.uvs[v]);
-            if (part.hasVertexColors())
-                piece.vertexColors.push_back(part.vertexColors[v]);
-        }
-        tri[k] = remap[v];
-    }
+    for (int k = 0; k < 3; ++k)
+        tri[k] = flt::copiedVertex(part, part.triangles[t][k], remap, piece);
     piece.triangles.push_back(tri);
     if (part.hasTriangleColors())
         piece.triangleColors.push_back(part.triangleColors[t]);
@@ -119,7 +107,7 @@ public:
         const flt::Part& part = from.level.parts[p];
         if (p != lastPart_) {
             lastPart_ = p;
-            remap_.assign(part.positions.size(), std::numeric_limits<std::uint32_t>::max());
+            remap_.assign(part.positions.size(), flt::kNotCopied);
             flt::Part copy;
             static_cast<PartIdentity&>(copy) = part;
             level.level.parts.push_back(std::move(copy));

@@ -199,23 +199,11 @@ void LevelWriter::writeMeshPart(const Part& part)
     for (const auto& [packed, triangles] : byColor) {
         Part sub;
         sub.color = part.triangleColors[triangles.front()];
-        std::vector<std::int64_t> local(part.positions.size(), -1);
+        std::vector<std::uint32_t> copied(part.positions.size(), kNotCopied);
         for (std::size_t t : triangles) {
             Triangle mapped;
-            for (int c = 0; c < 3; ++c) {
-                const std::uint32_t v = part.triangles[t][c];
-                if (local[v] < 0) {
-                    local[v] = std::int64_t(sub.positions.size());
-                    sub.positions.push_back(part.positions[v]);
-                    if (part.hasNormals())
-                        sub.normals.push_back(part.normals[v]);
-                    if (part.hasUvs())
-                        sub.uvs.push_back(part.uvs[v]);
-                    if (part.hasVertexColors())
-                        sub.vertexColors.push_back(part.vertexColors[v]);
-                }
-                mapped[c] = std::uint32_t(local[v]);
-            }
+            for (int c = 0; c < 3; ++c)
+                mapped[c] = copiedVertex(part, part.triangles[t][c], copied, sub);
             sub.triangles.push_back(mapped);
         }
         writeOneMesh(sub, sub.color);

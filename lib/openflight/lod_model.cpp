@@ -28,6 +28,21 @@ Vec3d transformed(const Mat4d& m, const Vec3d& p)
     return out;
 }
 
+std::uint32_t copiedVertex(const Part& from, std::uint32_t v, std::vector<std::uint32_t>& copied, Part& to)
+{
+    if (copied[v] == kNotCopied) {
+        copied[v] = std::uint32_t(to.positions.size());
+        to.positions.push_back(from.positions[v]);
+        if (from.hasNormals())
+            to.normals.push_back(from.normals[v]);
+        if (from.hasUvs())
+            to.uvs.push_back(from.uvs[v]);
+        if (from.hasVertexColors())
+            to.vertexColors.push_back(from.vertexColors[v]);
+    }
+    return copied[v];
+}
+
 double distance(const Vec3d& a, const Vec3d& b)
 {
     return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,14 @@ struct Part : PartIdentity {
     bool hasNormals() const { return !positions.empty() && normals.size() == positions.size(); }
     bool hasUvs() const { return !positions.empty() && uvs.size() == positions.size(); }
 };
+
+// Where a part's vertices stand in another part built from some of its triangles: one entry
+// per vertex of the first, kNotCopied until the vertex is copied.
+inline constexpr std::uint32_t kNotCopied = std::numeric_limits<std::uint32_t>::max();
+
+// Vertex `v` of `from` in `to`: copied there with its attributes the first time, and its
+// index in `to` kept in `copied` (sized to `from`'s vertices, kNotCopied where not yet copied).
+std::uint32_t copiedVertex(const Part& from, std::uint32_t v, std::vector<std::uint32_t>& copied, Part& to);
 
 struct Level {
     std::string name;
