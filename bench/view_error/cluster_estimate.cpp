@@ -1,11 +1,9 @@
 #include "cluster_estimate.h"
 
+#include "osg_placed.h"
+
 #include <osg/Geode>
-#include <osg/Geometry>
 #include <osg/LOD>
-#include <osg/NodeVisitor>
-#include <osg/Transform>
-#include <osg/TriangleIndexFunctor>
 #include <osgDB/ReadFile>
 
 #include <algorithm>
@@ -15,45 +13,13 @@
 
 namespace {
 
-// Counts the triangles of one geometry that have an area, keeping their centroids when asked.
-struct TriangleSink {
-    const osg::Vec3Array* vertices = nullptr;
-    osg::Matrixd toWorld;
-    std::vector<osg::Vec3f>* centroids = nullptr;
-    std::size_t triangles = 0;
-
-    void operator()(unsigned a, unsigned b, unsigned c)
-    {
-        // Two corners at one point: a triangle strip's join, no triangle drawn.
-        const osg::Vec3 &pa = (*vertices)[a], &pb = (*vertices)[b], &pc = (*vertices)[c];
-        if (pa == pb || pb == pc || pa == pc)
-            return;
-        ++triangles;
-        if (centroids) {
-            const osg::Vec3d sum = osg::Vec3d((*vertices)[a]) + osg::Vec3d((*vertices)[b]) +
-                                   osg::Vec3d((*vertices)[c]);
-            centroids->push_back(osg::Vec3f((sum / 3.0) * toWorld));
-        }
-    }
-};
-
 // Walks REF: every LOD child becomes a level (children sharing a range add up), and the
 // children starting at 0 give their triangles' centroids.
-class ChainCollector : public osg::NodeVisitor {
+class ChainCollector : public cadlod::test::PlacedVisitor {
 public:
-    explicit ChainCollector(ReferenceChain& chain) : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN), chain_(chain)
-    {
-        matrices_.push_back(osg::Matrixd::identity());
-    }
+    explicit ChainCollector(ReferenceChain& chain) : chain_(chain) {}
 
-    void apply(osg::Transform& t) override
-    {
-        osg::Matrixd local;
-        t.computeLocalToWorldMatrix(local, this);
-        matrices_.push_back(local * matrices_.back());
-        traverse(t);
-        matrices_.pop_back();
-    }
+    using PlacedVisitor::apply;
 
     void apply(osg::LOD& lod) override
     {
@@ -84,22 +50,20 @@ public:
     }
 
 private:
+    // Adds the triangles of `g` that have an area to the level's, and their centroids if it is
+    // the finest.
     void count(const osg::Geometry& g)
     {
-        const auto* v = dynamic_cast<const osg::Vec3Array*>(g.getVertexArray());
-        if (!v || v->empty())
-            return;
-        osg::TriangleIndexFunctor<TriangleSink> sink;
-        sink.vertices = v;
-        sink.toWorld = matrices_.back();
-        if (finest_)
-            sink.centroids = &chain_.finestCentroids;
-        g.accept(sink);
-        *level_ += sink.triangles;
+        const osg::Matrixd& m = placed();
+        cadlod::test::forEachTriangle(g, [&](const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c) {
+            ++*level_;
+            if (finest_)
+                chain_.finestCentroids.push_back(
+                    osg::Vec3f(((osg::Vec3d(a) + osg::Vec3d(b) + osg::Vec3d(c)) / 3.0) * m));
+        });
     }
 
     ReferenceChain& chain_;
-    std::vector<osg::Matrixd> matrices_;
     std::map<std::pair<double, double>, std::size_t> levels_;  // ordered by min range
     std::size_t* level_ = nullptr;
     bool finest_ = false;

@@ -130,7 +130,7 @@ struct Model {
     double levelZero = 1;
     std::unique_ptr<ClusterGrid> clusters;  // only with --estimate
     std::vector<cadlod::test::Point3> gapSamples;  // only with --gaps
-    double pixelRadians = 0;
+    cadlod::test::OsgGapQuery gaps;
 };
 
 PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
@@ -138,7 +138,8 @@ PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
     PathTotals totals;
     for (std::size_t i = 0; i < path.eyes.size(); ++i) {
         const osg::Vec3d& eye = path.eyes[i];
-        const cadlod::test::OsgView f = model.osg->drawFrom({eye.x(), eye.y(), eye.z()});
+        const cadlod::test::OsgView f =
+            model.osg->drawFrom({eye.x(), eye.y(), eye.z()}, model.gapSamples.empty() ? nullptr : &model.gaps);
         const double share = double(f.triangles) / model.levelZero;
         const double estimate = model.clusters ? model.clusters->share(eye) : 0;
         totals.worst = std::max(totals.worst, f.worstApparentPx);
@@ -150,8 +151,7 @@ PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
         totals.estimate += estimate;
         totals.nodeEstimate += model.clusters ? model.clusters->nodeShare(eye) : 0;
         if (!model.gapSamples.empty()) {
-            const cadlod::test::OsgGaps gaps =
-                model.osg->gapsFrom({eye.x(), eye.y(), eye.z()}, model.gapSamples, model.pixelRadians, kWideGapPx);
+            const cadlod::test::OsgGaps& gaps = f.gaps;
             totals.widestGap = std::max(totals.widestGap, gaps.widestPx);
             totals.meanGap += gaps.widestPx;
             totals.widerGaps += double(gaps.wider) / double(model.gapSamples.size());
@@ -206,7 +206,7 @@ int measure(const std::string& file, const ReferenceChain* reference, const std:
         model.clusters = std::make_unique<ClusterGrid>(*reference, bounds);
     if (gapPixelRadians > 0) {
         model.gapSamples = model.osg->finestSamples(kGapSamples);
-        model.pixelRadians = gapPixelRadians;
+        model.gaps = {&model.gapSamples, gapPixelRadians, kWideGapPx};
     }
     for (const Path& path : paths(bounds)) {
         const bool isWalk = std::string(path.name) == "walk";

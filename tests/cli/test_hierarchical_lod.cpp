@@ -175,20 +175,26 @@ std::vector<Point3> eyePoints(const std::array<Point3, 2>& box)
     return eyes;
 }
 
-// Seen from each of `eyes`, no point of the finest level of `osg` is farther from what is
-// drawn than the error bound (5 % slack for the samples): where neighbouring nodes show
-// different levels, none leaves a hole.
-void expectNoHoles(const OsgViewProbe& osg, const std::vector<Point3>& eyes)
-{
-    const ViewParams defaults;
-    const double pixelRadians = 2 * std::tan(defaults.fovYDegrees * M_PI / 360) / defaults.viewportHeightPx;
-    const std::vector<Point3> samples = osg.finestSamples(20000);
-    ASSERT_GT(samples.size(), 10000u);
-    for (const Point3& eye : eyes) {
-        const OsgGaps gaps = osg.gapsFrom(eye, samples, pixelRadians, kApparentErrorBound * 1.05);
-        EXPECT_EQ(gaps.wider, 0u) << "widest gap " << gaps.widestPx << " px from " << eye[0] << " " << eye[1] << " "
-                                  << eye[2];
+// Points of the finest level of `osg`, to ask for the gaps on screen the tests allow: none
+// wider than the error bound (5 % slack for the samples), in pixels of the default view.
+struct HoleCheck {
+    explicit HoleCheck(const OsgViewProbe& osg) : samples(osg.finestSamples(20000))
+    {
+        const ViewParams defaults;
+        query = {&samples, 2 * std::tan(defaults.fovYDegrees * M_PI / 360) / defaults.viewportHeightPx,
+                 kApparentErrorBound * 1.05};
     }
+    std::vector<Point3> samples;
+    OsgGapQuery query;
+};
+
+// `view`, drawn from `eye` with a HoleCheck's query, within the bound and without a hole:
+// where neighbouring nodes show different levels, none leaves one.
+void expectWithinTheBoundWithoutHoles(const OsgView& view, const Point3& eye)
+{
+    EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9));
+    EXPECT_EQ(view.gaps.wider, 0u) << "widest gap " << view.gaps.widestPx << " px from " << eye[0] << " " << eye[1]
+                                   << " " << eye[2];
 }
 
 // Seen from `eye`, every placement of the grid is drawn exactly once (by itself or by a
@@ -342,11 +348,11 @@ TEST(CliHierarchicalLod, AFileThatSharesNothingIsClusteredByItsParts)
     const OsgViewProbe osg(dir + "/parts.flt", "parts");
     ASSERT_TRUE(osg.loaded());
     std::size_t farDrawables = 0;
-    const std::vector<Point3> eyes = eyePoints(osg.bounds());
-    expectNoHoles(osg, eyes);
-    for (const Point3& eye : eyes) {
-        const OsgView view = osg.drawFrom(eye);
-        EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9));
+    const HoleCheck holes(osg);
+    ASSERT_GT(holes.samples.size(), 10000u);
+    for (const Point3& eye : eyePoints(osg.bounds())) {
+        const OsgView view = osg.drawFrom(eye, &holes.query);
+        expectWithinTheBoundWithoutHoles(view, eye);
         EXPECT_EQ(view.drawnPlacements.size(), 32u);
         farDrawables = view.drawables;
     }
@@ -476,19 +482,12 @@ TEST(CliHierarchicalLod, AFileOfOnePartHoldsTheBoundNearItAndIsOneDrawableFarOff
         for (std::size_t i = 0; i + 1 < r.size(); ++i)
             EXPECT_NEAR(r[i].second, r[i + 1].first, 1e-6 * r[i].second);
     }
-    // Where neighbouring chunks show different levels, none leaves a hole: every point of the
-    // finest level is within the error bound of what is drawn (5 % slack for the samples).
-    const ViewParams defaults;
-    const double pixelRadians = 2 * std::tan(defaults.fovYDegrees * M_PI / 360) / defaults.viewportHeightPx;
-    const std::vector<Point3> samples = osg.finestSamples(20000);
-    ASSERT_GT(samples.size(), 10000u);
+    const HoleCheck holes(osg);
+    ASSERT_GT(holes.samples.size(), 10000u);
     const std::vector<Point3> eyes = eyePoints(osg.bounds());
     for (const Point3& eye : eyes) {
-        const OsgView view = osg.drawFrom(eye);
-        EXPECT_LE(view.worstApparentPx, kApparentErrorBound * (1 + 1e-9));
-        const OsgGaps gaps = osg.gapsFrom(eye, samples, pixelRadians, kApparentErrorBound * 1.05);
-        EXPECT_EQ(gaps.wider, 0u) << "widest gap " << gaps.widestPx << " px from " << eye[0] << " " << eye[1] << " "
-                                  << eye[2];
+        const OsgView view = osg.drawFrom(eye, &holes.query);
+        expectWithinTheBoundWithoutHoles(view, eye);
         EXPECT_GE(view.triangles, 1u);  // drawn from every eye
         const std::size_t i = std::size_t(&eye - &eyes.front());
         if (i < 52) {  // inside and walking: its chunks
@@ -523,10 +522,10 @@ TEST(CliHierarchicalLod, TheSamplesChunksLeaveNoHoleWhereverTheEyeIs)
     EXPECT_NE(readFile(output).find("chunk long"), std::string::npos);
     const OsgViewProbe osg(output, "sample");
     ASSERT_TRUE(osg.loaded());
-    const std::vector<Point3> eyes = eyePoints(osg.bounds());
-    expectNoHoles(osg, eyes);
-    for (const Point3& eye : eyes)
-        EXPECT_LE(osg.drawFrom(eye).worstApparentPx, kApparentErrorBound * (1 + 1e-9));
+    const HoleCheck holes(osg);
+    ASSERT_GT(holes.samples.size(), 10000u);
+    for (const Point3& eye : eyePoints(osg.bounds()))
+        expectWithinTheBoundWithoutHoles(osg.drawFrom(eye, &holes.query), eye);
 }
 
 // The parts' chains and the clusters' proxies run at once on several threads; what they make

@@ -1,12 +1,13 @@
 #include "osg_view_probe.h"
 
+#include "osg_placed.h"
+
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
 #include <osg/Geometry>
 #include <osg/LOD>
 #include <osg/MatrixTransform>
 #include <osg/NodeVisitor>
-#include <osg/TriangleIndexFunctor>
 #include <osgDB/ReadFile>
 
 #include "measure/triangle_tree.h"
@@ -19,52 +20,19 @@
 namespace cadlod::test {
 namespace {
 
-// Counts the triangles of a geometry (its vertex array `vertices`) that have an area: not
-// those with two corners at one point, such as a triangle strip's joins.
-struct Count {
-    const osg::Vec3Array* vertices = nullptr;
-    std::size_t triangles = 0;
-    void operator()(unsigned a, unsigned b, unsigned c)
-    {
-        const osg::Vec3 &pa = (*vertices)[a], &pb = (*vertices)[b], &pc = (*vertices)[c];
-        triangles += (pa != pb && pb != pc && pa != pc);
-    }
-};
-
 std::size_t trianglesOf(const osg::Geometry& g)
 {
-    osg::TriangleIndexFunctor<Count> count;
-    count.vertices = dynamic_cast<const osg::Vec3Array*>(g.getVertexArray());
-    if (!count.vertices)
-        return 0;
-    g.accept(count);
-    return count.triangles;
+    std::size_t n = 0;
+    forEachTriangle(g, [&](const osg::Vec3&, const osg::Vec3&, const osg::Vec3&) { ++n; });
+    return n;
 }
 
-// A geometry's triangles as corner indices.
-struct Corners {
-    std::vector<std::array<unsigned, 3>> triangles;
-    void operator()(unsigned a, unsigned b, unsigned c)
-    {
-        if (a != b && b != c && a != c)
-            triangles.push_back({a, b, c});
-    }
-};
-
-// Appends the triangles of `g`, placed by `m`, to `out`; not those with two corners at one
-// point, such as a triangle strip's joins, whose centroid may lie off the surface.
+// Appends the triangles of `g`, placed by `m`, to `out`.
 void appendTriangles(const osg::Geometry& g, const osg::Matrixd& m, std::vector<std::array<osg::Vec3d, 3>>& out)
 {
-    const auto* v = dynamic_cast<const osg::Vec3Array*>(g.getVertexArray());
-    if (!v)
-        return;
-    osg::TriangleIndexFunctor<Corners> corners;
-    g.accept(corners);
-    for (const auto& t : corners.triangles) {
-        const osg::Vec3 &a = (*v)[t[0]], &b = (*v)[t[1]], &c = (*v)[t[2]];
-        if (a != b && b != c && a != c)
-            out.push_back({osg::Vec3d(a) * m, osg::Vec3d(b) * m, osg::Vec3d(c) * m});
-    }
+    forEachTriangle(g, [&](const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c) {
+        out.push_back({osg::Vec3d(a) * m, osg::Vec3d(b) * m, osg::Vec3d(c) * m});
+    });
 }
 
 // The names that frame placements: the model's (the header's ID holds 7 characters of it),
@@ -102,14 +70,9 @@ private:
     std::set<std::string>& out_;
 };
 
-class Drawer : public osg::NodeVisitor {
+class Drawer : public PlacedVisitor {
 public:
-    Drawer(const osg::Vec3d& eye, const std::string& model)
-        : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN), eye_(eye), model_(model)
-    {
-        matrices_.push_back(osg::Matrixd::identity());
-        switchedIn_.push_back(0);
-    }
+    Drawer(const osg::Vec3d& eye, const std::string& model) : eye_(eye), model_(model) { switchedIn_.push_back(0); }
 
     void apply(osg::Node& node) override
     {
@@ -122,18 +85,14 @@ public:
     void apply(osg::Transform& t) override
     {
         const bool placement = enter(t);
-        osg::Matrixd local;
-        t.computeLocalToWorldMatrix(local, this);
-        matrices_.push_back(local * matrices_.back());
-        traverse(t);
-        matrices_.pop_back();
+        PlacedVisitor::apply(t);
         if (placement)
             placement_.pop_back();
     }
 
     void apply(osg::LOD& lod) override
     {
-        const osg::Matrixd& m = matrices_.back();
+        const osg::Matrixd& m = placed();
         const double d = (eye_ * osg::Matrixd::inverse(m) - osg::Vec3d(lod.getCenter())).length();
         const double scale = std::max({osg::Vec3d(m(0, 0), m(0, 1), m(0, 2)).length(),
                                        osg::Vec3d(m(1, 0), m(1, 1), m(1, 2)).length(),
@@ -201,7 +160,7 @@ private:
         if (!v || v->empty())
             return;
         if (drawn_)
-            appendTriangles(g, matrices_.back(), *drawn_);
+            appendTriangles(g, placed(), *drawn_);
         view.triangles += trianglesOf(g);
         ++view.drawables;
         view.proxyDrawables += proxyDepth_ > 0 ? 1 : 0;
@@ -210,13 +169,12 @@ private:
             return;
         double nearest = std::numeric_limits<double>::max();
         for (const osg::Vec3& p : *v)
-            nearest = std::min(nearest, (osg::Vec3d(p) * matrices_.back() - eye_).length());
+            nearest = std::min(nearest, (osg::Vec3d(p) * placed() - eye_).length());
         view.worstApparentPx = std::max(view.worstApparentPx, nearest > 0 ? s / nearest : 1e9);
     }
 
     osg::Vec3d eye_;
     const std::string& model_;
-    std::vector<osg::Matrixd> matrices_;
     std::vector<double> switchedIn_;
     std::vector<std::string> placement_;
     int proxyDepth_ = 0;
@@ -250,18 +208,13 @@ private:
     std::set<const osg::Group*> seen_;
 };
 
-// The finest geometry's triangles, placed: every LOD node at its child drawn from up close.
-class FinestTriangles : public osg::NodeVisitor {
+// The finest geometry, each with its placement, to `visit`: every LOD node at its child drawn
+// from up close.
+template <class Visit>
+class FinestGeometry : public PlacedVisitor {
 public:
-    FinestTriangles() : osg::NodeVisitor(TRAVERSE_ALL_CHILDREN) { matrices_.push_back(osg::Matrixd::identity()); }
-    void apply(osg::Transform& t) override
-    {
-        osg::Matrixd local;
-        t.computeLocalToWorldMatrix(local, this);
-        matrices_.push_back(local * matrices_.back());
-        traverse(t);
-        matrices_.pop_back();
-    }
+    explicit FinestGeometry(Visit visit) : visit_(std::move(visit)) {}
+    using PlacedVisitor::apply;
     void apply(osg::LOD& lod) override
     {
         for (unsigned i = 0; i < lod.getNumChildren() && i < lod.getNumRanges(); ++i)
@@ -272,13 +225,45 @@ public:
     {
         for (unsigned i = 0; i < geode.getNumDrawables(); ++i)
             if (const osg::Geometry* g = geode.getDrawable(i)->asGeometry())
-                appendTriangles(*g, matrices_.back(), triangles);
+                visit_(*g, placed());
     }
-    std::vector<std::array<osg::Vec3d, 3>> triangles;
 
 private:
-    std::vector<osg::Matrixd> matrices_;
+    Visit visit_;
 };
+
+template <class Visit>
+void visitFinest(osg::Node& root, Visit visit)
+{
+    FinestGeometry<Visit> finest(std::move(visit));
+    root.accept(finest);
+}
+
+// The gaps of `query` with `drawn` seen from `eye`.
+OsgGaps gapsOf(const std::vector<std::array<osg::Vec3d, 3>>& drawn, const osg::Vec3d& eye, const OsgGapQuery& query)
+{
+    // Single-precision corners about the eye: the distances that matter are those near it.
+    std::vector<vcg::Point3f> vertices;
+    std::vector<TriangleTree::Corners> corners;
+    for (const auto& t : drawn) {
+        const auto first = std::uint32_t(vertices.size());
+        for (const osg::Vec3d& p : t)
+            vertices.emplace_back(float(p.x() - eye.x()), float(p.y() - eye.y()), float(p.z() - eye.z()));
+        corners.push_back({first, first + 1, first + 2});
+    }
+    const TriangleTree tree(std::move(vertices), std::move(corners));
+    OsgGaps gaps;
+    for (const Point3& s : *query.samples) {
+        const vcg::Point3d p(s[0] - eye.x(), s[1] - eye.y(), s[2] - eye.z());
+        double gap = std::numeric_limits<double>::infinity();
+        if (!tree.empty())
+            tree.closest(p, std::numeric_limits<double>::infinity(), gap);
+        const double px = gap / (p.Norm() * query.pixelRadians);
+        gaps.widestPx = std::max(gaps.widestPx, px);
+        gaps.wider += px > query.widerThanPx ? 1 : 0;
+    }
+    return gaps;
+}
 
 }  // namespace
 
@@ -315,10 +300,16 @@ OsgViewProbe::~OsgViewProbe() { delete impl_; }
 
 bool OsgViewProbe::loaded() const { return impl_->root.valid(); }
 
-OsgView OsgViewProbe::drawFrom(const Point3& eye) const
+OsgView OsgViewProbe::drawFrom(const Point3& eye, const OsgGapQuery* gaps) const
 {
-    Drawer drawer(osg::Vec3d(eye[0], eye[1], eye[2]), impl_->model);
+    const osg::Vec3d e(eye[0], eye[1], eye[2]);
+    Drawer drawer(e, impl_->model);
+    std::vector<std::array<osg::Vec3d, 3>> drawn;
+    if (gaps)
+        drawer.collectInto(drawn);
     impl_->root->accept(drawer);
+    if (gaps)
+        drawer.view.gaps = gapsOf(drawn, e, *gaps);
     return drawer.view;
 }
 
@@ -331,55 +322,26 @@ std::vector<OsgLodRanges> OsgViewProbe::lodNodes() const
 
 std::size_t OsgViewProbe::finestTriangles() const
 {
-    FinestTriangles finest;
-    impl_->root->accept(finest);
-    return finest.triangles.size();
+    std::size_t n = 0;
+    visitFinest(*impl_->root, [&](const osg::Geometry& g, const osg::Matrixd&) { n += trianglesOf(g); });
+    return n;
 }
 
 std::vector<Point3> OsgViewProbe::finestSamples(std::size_t most) const
 {
-    FinestTriangles finest;
-    impl_->root->accept(finest);
-    const std::size_t n = finest.triangles.size();
+    std::vector<Point3> centroids;
+    visitFinest(*impl_->root, [&](const osg::Geometry& g, const osg::Matrixd& m) {
+        forEachTriangle(g, [&](const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c) {
+            const osg::Vec3d p = (osg::Vec3d(a) * m + osg::Vec3d(b) * m + osg::Vec3d(c) * m) / 3.0;
+            centroids.push_back({p.x(), p.y(), p.z()});
+        });
+    });
+    const std::size_t n = centroids.size();
     const std::size_t stride = std::max<std::size_t>(1, (n + most - 1) / std::max<std::size_t>(most, 1));
     std::vector<Point3> samples;
-    for (std::size_t i = 0; i < n; i += stride) {
-        const auto& t = finest.triangles[i];
-        const osg::Vec3d c = (t[0] + t[1] + t[2]) / 3.0;
-        samples.push_back({c.x(), c.y(), c.z()});
-    }
+    for (std::size_t i = 0; i < n; i += stride)
+        samples.push_back(centroids[i]);
     return samples;
-}
-
-OsgGaps OsgViewProbe::gapsFrom(const Point3& eye, const std::vector<Point3>& samples, double pixelRadians,
-                               double widerThanPx) const
-{
-    const osg::Vec3d e(eye[0], eye[1], eye[2]);
-    Drawer drawer(e, impl_->model);
-    std::vector<std::array<osg::Vec3d, 3>> drawn;
-    drawer.collectInto(drawn);
-    impl_->root->accept(drawer);
-    // Single-precision corners about the eye: the distances that matter are those near it.
-    std::vector<vcg::Point3f> vertices;
-    std::vector<TriangleTree::Corners> corners;
-    for (const auto& t : drawn) {
-        const auto first = std::uint32_t(vertices.size());
-        for (const osg::Vec3d& p : t)
-            vertices.emplace_back(float(p.x() - e.x()), float(p.y() - e.y()), float(p.z() - e.z()));
-        corners.push_back({first, first + 1, first + 2});
-    }
-    const TriangleTree tree(std::move(vertices), std::move(corners));
-    OsgGaps gaps;
-    for (const Point3& s : samples) {
-        const vcg::Point3d p(s[0] - e.x(), s[1] - e.y(), s[2] - e.z());
-        double gap = std::numeric_limits<double>::infinity();
-        if (!tree.empty())
-            tree.closest(p, std::numeric_limits<double>::infinity(), gap);
-        const double px = gap / (p.Norm() * pixelRadians);
-        gaps.widestPx = std::max(gaps.widestPx, px);
-        gaps.wider += px > widerThanPx ? 1 : 0;
-    }
-    return gaps;
 }
 
 std::array<Point3, 2> OsgViewProbe::bounds() const

@@ -20,18 +20,28 @@ namespace cadlod::test {
 
 using Point3 = std::array<double, 3>;
 
+// The gaps on screen from one eye point (OsgViewProbe::drawFrom with an OsgGapQuery).
+struct OsgGaps {
+    double widestPx = 0;    // the widest over the samples
+    std::size_t wider = 0;  // samples whose gap is wider than asked
+};
+
+// For each of `samples`, its gap: the distance to the nearest triangle drawn, over the size
+// of a pixel `pixelRadians` wide at the sample's distance from the eye; counted where wider
+// than `widerThanPx`.
+struct OsgGapQuery {
+    const std::vector<Point3>* samples = nullptr;
+    double pixelRadians = 0;
+    double widerThanPx = 0;
+};
+
 struct OsgView {
     double worstApparentPx = 0;    // max s / n over the drawables drawn by a level with s > 0
     std::size_t triangles = 0;
     std::size_t drawables = 0;
     std::size_t proxyDrawables = 0;  // of the drawables, those of cluster proxies
     std::map<std::string, std::size_t> drawnPlacements;  // drawn by itself or by a proxy
-};
-
-// The gaps on screen from one eye point (OsgViewProbe::gapsFrom).
-struct OsgGaps {
-    double widestPx = 0;    // the widest over the samples
-    std::size_t wider = 0;  // samples whose gap is wider than asked
+    OsgGaps gaps;                                        // only when asked
 };
 
 // The LOD children of one node (sharing a parent and a centre).
@@ -43,18 +53,13 @@ class OsgViewProbe {
 public:
     OsgViewProbe(const std::string& path, const std::string& modelName);
     bool loaded() const;
-    OsgView drawFrom(const Point3& eye) const;
+    OsgView drawFrom(const Point3& eye, const OsgGapQuery* gaps = nullptr) const;
     std::vector<OsgLodRanges> lodNodes() const;
     std::array<Point3, 2> bounds() const;
     std::size_t finestTriangles() const;  // every LOD node at its child drawn from up close
     // Points on the finest geometry (every LOD node at its child drawn from up close), in the
     // model's frame: the centroids of its triangles, of at most `most` of them evenly spread.
     std::vector<Point3> finestSamples(std::size_t most) const;
-    // For each sample, its gap from `eye`: the distance to the nearest triangle drawn from
-    // there, over the size of a pixel `pixelRadians` wide at the sample's distance from the
-    // eye. The widest, and how many are wider than `widerThanPx`.
-    OsgGaps gapsFrom(const Point3& eye, const std::vector<Point3>& samples, double pixelRadians,
-                     double widerThanPx) const;
     ~OsgViewProbe();
 
 private:
