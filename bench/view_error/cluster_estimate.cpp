@@ -57,9 +57,13 @@ private:
         const osg::Matrixd& m = placed();
         cadlod::test::forEachTriangle(g, [&](const osg::Vec3& a, const osg::Vec3& b, const osg::Vec3& c) {
             ++*level_;
-            if (finest_)
-                chain_.finestCentroids.push_back(
-                    osg::Vec3f(((osg::Vec3d(a) + osg::Vec3d(b) + osg::Vec3d(c)) / 3.0) * m));
+            if (!finest_)
+                return;
+            const osg::Vec3d pa = osg::Vec3d(a) * m, pb = osg::Vec3d(b) * m, pc = osg::Vec3d(c) * m;
+            const osg::Vec3d centroid = (pa + pb + pc) / 3.0;
+            chain_.finestCentroids.push_back(osg::Vec3f(centroid));
+            chain_.finestRadii.push_back(
+                float(0.5 * std::max({(pa - pb).length(), (pb - pc).length(), (pc - pa).length()})));
         });
     }
 
@@ -112,8 +116,10 @@ ClusterGrid::ClusterGrid(const ReferenceChain& chain, const osg::BoundingBox& bo
 {
     size_ = osg::Vec3d(box.xMax(), box.yMax(), box.zMax()) - lo_;
     cellRadius_ = 0.5 * size_.length() / kCells;
-    for (const osg::Vec3f& c : chain.finestCentroids)
-        ++triangles_[cellIndex(c)];
+    for (const osg::Vec3f& c : chain.finestCentroids) {
+        cellOfFinest_.push_back(cellIndex(c));
+        ++triangles_[cellOfFinest_.back()];
+    }
     total_ = chain.finestCentroids.size();
 }
 
@@ -178,5 +184,21 @@ double ClusterGrid::share(const osg::Vec3d& eye) const
     for (int cell = 0; cell < int(triangles_.size()); ++cell)
         if (triangles_[cell] > 0)
             drawn += double(triangles_[cell]) * chain_.shareAt(distanceToCell(eye, cell));
+    return drawn / double(total_);
+}
+
+double ClusterGrid::heldShare(const osg::Vec3d& eye) const
+{
+    if (total_ == 0)
+        return 0;
+    std::vector<double> cellShare(triangles_.size(), 0.0);
+    for (int cell = 0; cell < int(triangles_.size()); ++cell)
+        if (triangles_[cell] > 0)
+            cellShare[cell] = chain_.shareAt(distanceToCell(eye, cell));
+    double drawn = 0;
+    for (std::size_t t = 0; t < total_; ++t) {
+        const bool held = (osg::Vec3d(chain_.finestCentroids[t]) - eye).length() < kHeldRadii * chain_.finestRadii[t];
+        drawn += held ? 1.0 : cellShare[cellOfFinest_[t]];
+    }
     return drawn / double(total_);
 }

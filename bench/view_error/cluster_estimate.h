@@ -4,6 +4,8 @@
 // LOD nodes: each cell switched by the distance to its centre, as OSG does, and a level shown
 // only where the bound of §8 holds at the cell's nearest point (from six radii off and its
 // error's distance plus a radius): what the finest hierarchy of cell-sized nodes could draw.
+// And the estimate with every finest triangle held whole near it: what LOD nodes that draw
+// the finest triangles whole could draw at best, where some are long.
 #pragma once
 
 #include <osg/BoundingBox>
@@ -25,6 +27,7 @@ struct ReferenceLevel {
 struct ReferenceChain {
     std::vector<ReferenceLevel> levels;  // sorted by minRange; levels[0] starts at 0
     std::vector<osg::Vec3f> finestCentroids;  // world coordinates
+    std::vector<float> finestRadii;           // each one's least bounding radius: half its longest side
 
     // T_k / T_0 of the level whose range holds the distance, else of the level nearest by range.
     double shareAt(double distance) const;
@@ -43,6 +46,14 @@ public:
     double share(const osg::Vec3d& eye) const;
     // The same, each cell an LOD node.
     double nodeShare(const osg::Vec3d& eye) const;
+    // share(), but each finest triangle drawn whole wherever the eye is nearer its centroid than
+    // kHeldRadii of its radii: an LOD node that holds it whole reaches at least that radius from
+    // its centre, and may not draw a coarser level until the eye is six of its reaches off its
+    // centre, so five off the triangle's centroid.
+    double heldShare(const osg::Vec3d& eye) const;
+    static constexpr double kHeldRadii = 5;
+    // Level 0's triangles, which the shares are of.
+    std::size_t levelZero() const { return total_; }
 
 private:
     int cellIndex(const osg::Vec3f& point) const;
@@ -54,5 +65,6 @@ private:
     osg::Vec3d lo_, size_;
     double cellRadius_ = 0;
     std::array<std::size_t, kCells * kCells * kCells> triangles_{};
+    std::vector<int> cellOfFinest_;
     std::size_t total_ = 0;
 };

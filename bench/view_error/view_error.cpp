@@ -7,11 +7,12 @@
 // switched in at s shows its error as s / n pixels, n being the distance from the eye to the
 // nearest vertex of that level's own geometry (by the chain's contract the error is 1 px at
 // s). Prints per path the worst and mean worst error, the triangles drawn as a share of level
-// 0 and the drawables (mean, most, and of them the cluster proxies); with --estimate REF, also
+// 0 (with --estimate, REF's level 0) and the drawables (mean, most, and of them the cluster proxies); with --estimate REF, also
 // the share the per-cluster estimate of REF's chain draws (cluster_estimate.h) and the ratio
 // of the two, and the same for the estimate's cells as LOD nodes (with --estimate-triangles
 // FILE, level 0's triangles are FILE's, the shares REF's); with --walk-csv, every walk
 // point's figures; with --box, the paths are laid in that box rather than the model's own;
+// with --breakdown N, the N LOD records drawing the most triangles per path;
 // with --gaps, the gaps on screen (osg_view_probe.h) at points of the finest geometry, per
 // path: the widest, the mean of each eye point's widest, and the share wider than the
 // error bound (1.2 px, 5 % slack): within it where every drawn level keeps its error, wider
@@ -34,6 +35,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -116,7 +118,8 @@ private:
 
 struct PathTotals {
     double worst = 0, meanWorst = 0, share = 0, drawables = 0, mostDrawables = 0, proxyDrawables = 0, estimate = 0,
-           nodeEstimate = 0, widestGap = 0, meanGap = 0, widerGaps = 0;
+           nodeEstimate = 0, heldEstimate = 0, widestGap = 0, meanGap = 0, widerGaps = 0;
+    std::map<std::string, double> trianglesByLevel;  // summed over the path's eye points
 };
 
 // How many points of the finest geometry the gaps are measured at, and the gap counted as
@@ -150,12 +153,15 @@ PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
         totals.proxyDrawables += double(f.proxyDrawables);
         totals.estimate += estimate;
         totals.nodeEstimate += model.clusters ? model.clusters->nodeShare(eye) : 0;
+        totals.heldEstimate += model.clusters ? model.clusters->heldShare(eye) : 0;
         if (!model.gapSamples.empty()) {
             const cadlod::test::OsgGaps& gaps = f.gaps;
             totals.widestGap = std::max(totals.widestGap, gaps.widestPx);
             totals.meanGap += gaps.widestPx;
             totals.widerGaps += double(gaps.wider) / double(model.gapSamples.size());
         }
+        for (const auto& [level, triangles] : f.trianglesByLevel)
+            totals.trianglesByLevel[level] += double(triangles);
         if (walkCsv)
             walkCsv->row(model.file, i, eye, share, f, model.clusters ? &estimate : nullptr);
     }
@@ -173,10 +179,26 @@ void printPath(const Model& model, const Path& path, const PathTotals& totals)
         std::printf(" estimate_share %.4f ratio_to_estimate %.4f node_estimate_share %.4f ratio_to_node_estimate %.4f",
                     totals.estimate / n, totals.estimate > 0 ? totals.share / totals.estimate : 0.0,
                     totals.nodeEstimate / n, totals.nodeEstimate > 0 ? totals.share / totals.nodeEstimate : 0.0);
+    if (model.clusters)
+        std::printf(" held_estimate_share %.4f ratio_to_held_estimate %.4f", totals.heldEstimate / n,
+                    totals.heldEstimate > 0 ? totals.share / totals.heldEstimate : 0.0);
     if (!model.gapSamples.empty())
         std::printf(" widest_gap_px %.2f mean_widest_gap_px %.2f wide_gap_share %.6f", totals.widestGap,
                     totals.meanGap / n, totals.widerGaps / n);
     std::printf("\n");
+}
+
+// The LOD records that draw the most triangles on the path, by their mean per eye point.
+void printBreakdown(const Model& model, const Path& path, const PathTotals& totals, std::size_t most)
+{
+    std::vector<std::pair<double, std::string>> levels;
+    for (const auto& [level, triangles] : totals.trianglesByLevel)
+        levels.emplace_back(triangles / double(path.eyes.size()), level);
+    std::sort(levels.rbegin(), levels.rend());
+    levels.resize(std::min(levels.size(), most));
+    for (const auto& [triangles, level] : levels)
+        std::printf("  %s %s %.0f triangles (%.4f of level 0) in \"%s\"\n", model.file.c_str(), path.name, triangles,
+                    triangles / model.levelZero, level.c_str());
 }
 
 // The model's box as OSG bounds it, unless --box gave one: OSG bounds a transformed subgraph
@@ -191,7 +213,7 @@ osg::BoundingBox boxOf(const cadlod::test::OsgViewProbe& probe, const std::vecto
 }
 
 int measure(const std::string& file, const ReferenceChain* reference, const std::vector<double>& givenBox,
-            double gapPixelRadians, WalkCsv& walkCsv)
+            double gapPixelRadians, std::size_t breakdown, WalkCsv& walkCsv)
 {
     Model model;
     model.file = file;
@@ -202,15 +224,21 @@ int measure(const std::string& file, const ReferenceChain* reference, const std:
     }
     model.levelZero = double(std::max<std::size_t>(1, model.osg->finestTriangles()));
     const osg::BoundingBox bounds = boxOf(*model.osg, givenBox);
-    if (reference)
+    if (reference) {
+        // The same model's level 0 for both: a file that cut its finest triangles into pieces
+        // draws a share of the triangles the model has, not of its pieces.
         model.clusters = std::make_unique<ClusterGrid>(*reference, bounds);
+        model.levelZero = double(std::max<std::size_t>(1, model.clusters->levelZero()));
+    }
     if (gapPixelRadians > 0) {
         model.gapSamples = model.osg->finestSamples(kGapSamples);
         model.gaps = {&model.gapSamples, gapPixelRadians, kWideGapPx};
     }
     for (const Path& path : paths(bounds)) {
         const bool isWalk = std::string(path.name) == "walk";
-        printPath(model, path, measurePath(model, path, isWalk && walkCsv.isOpen() ? &walkCsv : nullptr));
+        const PathTotals totals = measurePath(model, path, isWalk && walkCsv.isOpen() ? &walkCsv : nullptr);
+        printPath(model, path, totals);
+        printBreakdown(model, path, totals, breakdown);
     }
     return 0;
 }
@@ -236,6 +264,8 @@ int main(int argc, char** argv)
     bool gaps = false;
     double fovY = 45.0, viewport = 1080.0;
     app.add_flag("--gaps", gaps, "also the widest gap on screen per path");
+    std::size_t breakdown = 0;
+    app.add_option("--breakdown", breakdown, "also the N LOD records drawing the most triangles per path");
     app.add_option("--fov-y", fovY, "with --gaps: the vertical field of view the model was built for, degrees")
         ->capture_default_str();
     app.add_option("--viewport", viewport, "with --gaps: the viewport height it was built for, pixels")
@@ -273,6 +303,6 @@ int main(int argc, char** argv)
     const double pixelRadians = gaps ? 2 * std::tan(fovY * M_PI / 360) / viewport : 0.0;
     int rc = 0;
     for (const std::string& file : files)
-        rc |= measure(file, estimateFile.empty() ? nullptr : &reference, box, pixelRadians, walkCsv);
+        rc |= measure(file, estimateFile.empty() ? nullptr : &reference, box, pixelRadians, breakdown, walkCsv);
     return rc;
 }

@@ -105,7 +105,9 @@ public:
                 standFor(lod, i);  // a cluster's proxy: what its near child holds
             proxyDepth_ += proxy;
             switchedIn_.push_back(lod.getMinRange(i) * scale);
+            levelNames_.push_back(lod.getName());
             lod.getChild(i)->accept(*this);
+            levelNames_.pop_back();
             switchedIn_.pop_back();
             proxyDepth_ -= proxy;
         }
@@ -161,7 +163,9 @@ private:
             return;
         if (drawn_)
             appendTriangles(g, placed(), *drawn_);
-        view.triangles += trianglesOf(g);
+        const std::size_t triangles = trianglesOf(g);
+        view.triangles += triangles;
+        view.trianglesByLevel[levelNames_.empty() ? std::string() : levelNames_.back()] += triangles;
         ++view.drawables;
         view.proxyDrawables += proxyDepth_ > 0 ? 1 : 0;
         const double s = switchedIn_.back();
@@ -177,6 +181,7 @@ private:
     const std::string& model_;
     std::vector<double> switchedIn_;
     std::vector<std::string> placement_;
+    std::vector<std::string> levelNames_;
     int proxyDepth_ = 0;
     std::vector<std::array<osg::Vec3d, 3>>* drawn_ = nullptr;
 };

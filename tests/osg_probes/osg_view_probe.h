@@ -41,6 +41,7 @@ struct OsgView {
     std::size_t drawables = 0;
     std::size_t proxyDrawables = 0;  // of the drawables, those of cluster proxies
     std::map<std::string, std::size_t> drawnPlacements;  // drawn by itself or by a proxy
+    std::map<std::string, std::size_t> trianglesByLevel;  // by the name of the LOD node drawn
     OsgGaps gaps;                                        // only when asked
 };
 
