@@ -157,7 +157,7 @@ PartChain convertPart(vrml::Geometry& geometry, const PartWelding& welding, cons
     for (const LodLevel& level : chain.result.levels)
         errors.push_back(level.hausdorffMax);
     definition.chunks =
-        chunkLevels(definition.levels, errors, smallestChunkedRadius, firstHeldSwitch(definition.levels));
+        chunkLevels(definition.name, definition.levels, errors, smallestChunkedRadius, firstHeldSwitch(definition.levels));
     holdAtNearestPoint(definition.levels, chain.result);
     return chain;
 }

@@ -313,8 +313,8 @@ std::vector<flt::PartChunk> cut(const FinestTriangles& finest, const std::vector
 
 }  // namespace
 
-std::vector<flt::PartChunk> chunkLevels(const std::vector<flt::Level>& levels, const std::vector<double>& errors,
-                                        double smallestRadius, double drawnTo)
+std::vector<flt::PartChunk> chunkLevels(const std::string& partName, const std::vector<flt::Level>& levels,
+                                        const std::vector<double>& errors, double smallestRadius, double drawnTo)
 {
     if (errors.size() != levels.size())
         throw std::logic_error("chunkLevels: one error per level");
@@ -333,8 +333,8 @@ std::vector<flt::PartChunk> chunkLevels(const std::vector<flt::Level>& levels, c
         drawable.push_back(level);
     }
     const FinestTriangles finest(levels.front());
-    return cut(finest, supported(drawable, errors, finest), box, kChunkCut, levels.front().name,
-               levels.front().center, drawnTo);
+    return cut(finest, supported(drawable, errors, finest), box, kChunkCut, partName, levels.front().center,
+               drawnTo);
 }
 
 std::size_t chunkCount(const std::vector<flt::PartChunk>& chunks)

@@ -19,6 +19,7 @@
 #include "openflight/instanced_writer.h"  // PartChunk
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace cadlod {
@@ -39,15 +40,16 @@ inline constexpr double kChunkedPartShare = 1.0 / 16.0;
 // in more calls.
 inline constexpr std::size_t kLeastChunkTriangles = 64;
 
-// `levels`: the part's chain, finest first, each switched in where its error projects to the
-// pixel error at the centre (not yet held at the nearest point); the chunks are drawn while
+// `levels`: the chain of the part named `partName` (its chunks' levels are named after it),
+// finest first, each switched in where its error projects to the pixel error at the centre
+// (not yet held at the nearest point); the chunks are drawn while
 // the eye is nearer than `drawnTo` to the part's centre (where its first simplified level,
 // held at its nearest point, takes over): a chunk keeps the levels it shows there. Empty
 // when chunks would not let any level switch nearer, the part's radius is below
 // `smallestRadius`, or its chunks would hold fewer than kLeastChunkTriangles each.
 // `errors[k]`: how far level k stands from the finest at most (its Hausdorff distance).
-std::vector<flt::PartChunk> chunkLevels(const std::vector<flt::Level>& levels, const std::vector<double>& errors,
-                                        double smallestRadius, double drawnTo);
+std::vector<flt::PartChunk> chunkLevels(const std::string& partName, const std::vector<flt::Level>& levels,
+                                        const std::vector<double>& errors, double smallestRadius, double drawnTo);
 
 // How many chunks `chunks` hold, at every depth.
 std::size_t chunkCount(const std::vector<flt::PartChunk>& chunks);

@@ -519,7 +519,7 @@ TEST(CliHierarchicalLod, TheSamplesChunksLeaveNoHoleWhereverTheEyeIs)
     ASSERT_EQ(run.exitCode, 0) << run.stderrText;
     const nlohmann::json report = nlohmann::json::parse(readFile(dir + "/sample.json"));
     EXPECT_GE(report.at("hlod").at("chunkedParts").get<int>(), 2);
-    EXPECT_NE(readFile(output).find("chunk long"), std::string::npos);
+    EXPECT_NE(readFile(output).find("HOUSING chunk long"), std::string::npos);
     const OsgViewProbe osg(output, "sample");
     ASSERT_TRUE(osg.loaded());
     const HoleCheck holes(osg);

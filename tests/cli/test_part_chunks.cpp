@@ -100,7 +100,7 @@ void expectEveryLevelCoversItsFinest(const flt::PartChunk& chunk)
 TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
 {
     const std::vector<flt::Level> levels{strip(256, 0, 1.0), strip(16, 1.0, 4.0), strip(4, 4.0, 1e30)};
-    const auto chunks = chunkLevels(levels, exact(levels), 0.0, kNeverCulled);
+    const auto chunks = chunkLevels("bar", levels, exact(levels), 0.0, kNeverCulled);
     ASSERT_EQ(chunks.size(), 4u);  // four along x; the strip is flat in y and z
     for (std::size_t k = 0; k < levels.size(); ++k) {
         std::size_t triangles = 0;
@@ -118,13 +118,17 @@ TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
         EXPECT_DOUBLE_EQ(chunk.levels[0].switchIn, chunk.levels[1].switchOut);
         EXPECT_LT(chunk.levels[1].switchOut, switchAtNearestPoint(1.0, wholeReach) / 2);
     }
-    EXPECT_TRUE(chunkLevels(levels, exact(levels), 1.0, kNeverCulled).empty());  // smaller than the smallest part cut
+    for (const auto& chunk : chunks)  // named after the part, so that a reader can tell whose they are
+        for (std::size_t k = 0; k < chunk.levels.size(); ++k)
+            EXPECT_EQ(chunk.levels[k].name.rfind("bar chunk ", 0), 0u) << chunk.levels[k].name;
+    // Smaller than the smallest part cut:
+    EXPECT_TRUE(chunkLevels("bar", levels, exact(levels), 1.0, kNeverCulled).empty());
 
     // Drawn only while the eye is nearer than the whole part's first simplified level (held at
     // its nearest point) to its centre, a chunk keeps the levels it shows there: level 2,
     // from 4.1 m off a chunk's centre, never is within 3.4 m of it.
     const double drawnTo = switchAtNearestPoint(1.0, wholeReach);
-    for (const auto& chunk : chunkLevels(levels, exact(levels), 0.0, drawnTo)) {
+    for (const auto& chunk : chunkLevels("bar", levels, exact(levels), 0.0, drawnTo)) {
         ASSERT_EQ(chunk.levels.size(), 2u);
         EXPECT_LT(chunk.levels[1].switchOut, drawnTo);
         EXPECT_GE(chunk.levels[1].switchIn, kNeverCulled);
@@ -134,7 +138,7 @@ TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
     // four draw calls where one draws it all.
     const std::vector<flt::Level> few{strip(64, 0, 1.0), strip(16, 1.0, 4.0), strip(4, 4.0, 1e30)};
     EXPECT_LT(few.front().triangleCount(), 4 * kLeastChunkTriangles);
-    EXPECT_TRUE(chunkLevels(few, exact(few), 0.0, kNeverCulled).empty());
+    EXPECT_TRUE(chunkLevels("bar", few, exact(few), 0.0, kNeverCulled).empty());
 }
 
 namespace {
@@ -189,7 +193,7 @@ TEST(PartChunks, AChunkWaitingForTheNearestPointFloorIsCutAgain)
     const std::vector<flt::Level> levels{strip(4096, 0, 0.01), strip(256, 0.01, 4.0), strip(4, 4.0, 1e30)};
     const double wholeReach = std::hypot(0.5, 0.005);
     const double drawnTo = switchAtNearestPoint(0.01, wholeReach);
-    const std::vector<flt::PartChunk> chunks = chunkLevels(levels, exact(levels), 0.0, drawnTo);
+    const std::vector<flt::PartChunk> chunks = chunkLevels("bar", levels, exact(levels), 0.0, drawnTo);
     ASSERT_EQ(chunks.size(), 4u);
     ChunkTally tally;
     walk(chunks, drawnTo, 0, tally);
@@ -212,7 +216,7 @@ TEST(PartChunks, LongTrianglesAndWhatStandsForThemAreAChunkOfTheirOwn)
 {
     const std::vector<flt::Level> levels{withPlate(strip(1024, 0, 1.0)), withPlate(strip(64, 1.0, 4.0)),
                                          withPlate(strip(2, 4.0, 1e30))};
-    const std::vector<flt::PartChunk> chunks = chunkLevels(levels, exact(levels), 0.0, kNeverCulled);
+    const std::vector<flt::PartChunk> chunks = chunkLevels("bar", levels, exact(levels), 0.0, kNeverCulled);
     ASSERT_EQ(chunks.size(), 5u);  // four along the strip, and the plate
     std::size_t longChunks = 0, finest = 0;
     for (const flt::PartChunk& chunk : chunks) {
@@ -241,7 +245,7 @@ TEST(PartChunks, LongTrianglesAndWhatStandsForThemAreAChunkOfTheirOwn)
 TEST(PartChunks, ACoarseTriangleAcrossABorderIsInEveryChunkItStandsForCutToItsBox)
 {
     const std::vector<flt::Level> levels{strip(1024, 0, 1.0), strip(3, 1.0, 4.0), strip(1, 4.0, 1e30)};
-    const std::vector<flt::PartChunk> chunks = chunkLevels(levels, exact(levels), 0.0, kNeverCulled);
+    const std::vector<flt::PartChunk> chunks = chunkLevels("bar", levels, exact(levels), 0.0, kNeverCulled);
     ASSERT_EQ(chunks.size(), 4u);
     std::size_t finest = 0;
     for (const flt::PartChunk& chunk : chunks) {
