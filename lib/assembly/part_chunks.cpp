@@ -35,15 +35,16 @@ Box3 boxOf(const flt::Level& level)
 // A grid over a node's box. A finest triangle goes to the cell of its centroid, unless it is
 // longer than a cell along a cut axis: whichever cell took it would widen its chunk's reach,
 // and so the distance that whole chunk waits before it coarsens. CAD tessellations hold such
-// triangles (a face's slivers, a plate's two triangles) beside many small ones; they go to
-// the long cell, a chunk of its own that coarsens late but holds few triangles. A coarse
-// triangle goes to every cell of the finest triangles it stands for (finest_support.h), cut
-// to the cell's box (splitCoarse): a chunk's coarse level then covers each finest triangle it
-// held within the level's error, so chunks at different levels overlap, and leave no holes.
+// triangles (a face's slivers, a plate's two triangles) beside many small ones; they go to a
+// long cell, which spans the box along the axes they are long on and is a cell of the grid
+// along the others: a cylinder's slivers, long along its axis, go to a column of cells each,
+// by where they lie around it. A coarse triangle goes to every cell of the finest triangles
+// it stands for (finest_support.h), cut to the cell's box (splitCoarse): a chunk's coarse
+// level then covers each finest triangle it held within the level's error, so chunks at
+// different levels overlap, and leave no holes.
 class ChunkGrid {
 public:
-    static constexpr int kLongCell = -1;
-    static constexpr int kOutside = -2;
+    static constexpr int kOutside = -1;
 
     // `perAxis` cells along every axis but a thin one (a plate's thickness): one there.
     ChunkGrid(const Box3& box, int perAxis) : box_(box), perAxis_(perAxis)
@@ -66,17 +67,35 @@ public:
             if (finest.centroid(i)[a] < box_.lo[a] - slack || finest.centroid(i)[a] > box_.hi[a] + slack)
                 return kOutside;
         }
-        int cell = 0;
+        int cell = 0, longAxes = 0;
         for (int a = 0; a < 3; ++a) {
-            if (cells_[a] > 1 && finest.extent(i)[a] > size_[a] / cells_[a])
-                return kLongCell;
-            const int c = std::clamp(int((finest.centroid(i)[a] - box_.lo[a]) / size_[a] * cells_[a]), 0, cells_[a] - 1);
+            int c = std::clamp(int((finest.centroid(i)[a] - box_.lo[a]) / size_[a] * cells_[a]), 0, cells_[a] - 1);
+            if (cells_[a] > 1 && finest.extent(i)[a] > size_[a] / cells_[a]) {
+                longAxes |= 1 << a;
+                c = 0;
+            }
             cell = cell * perAxis_ + c;
         }
-        return cell;
+        return longAxes * cellsPerMask() + cell;
+    }
+
+    // How a cell is named: its number in the grid, or for a long cell the axes it spans and
+    // its number among the cells along the others.
+    std::string nameOf(int cell) const
+    {
+        const int longAxes = cell / cellsPerMask();
+        if (longAxes == 0)
+            return std::to_string(cell);
+        std::string name = "long ";
+        for (int a = 0; a < 3; ++a)
+            if (longAxes & (1 << a))
+                name += "xyz"[a];
+        return name + " " + std::to_string(cell % cellsPerMask());
     }
 
 private:
+    int cellsPerMask() const { return perAxis_ * perAxis_ * perAxis_; }
+
     Box3 box_;
     int perAxis_ = 1;
     std::array<double, 3> size_{};
@@ -178,9 +197,9 @@ Box3 grown(Box3 box, double error)
 }
 
 // A coarse level's triangles in the cells of the finest triangles each stands for, standing
-// there for those alone: whole in the long cell; elsewhere cut to the box of the cell's finest
-// triangles (`finestBoxes`) grown by the level's error, so that the cell's coarse level
-// covers its finest level's surface and reaches no farther.
+// there for those alone, cut to the box of the cell's finest triangles (`finestBoxes`) grown
+// by the level's error, so that the cell's coarse level covers its finest level's surface and
+// reaches no farther.
 std::map<int, SupportedLevel> splitCoarse(const SupportedLevel& coarse, const ChunkGrid& grid,
                                           const FinestTriangles& finest, const std::map<int, Box3>& finestBoxes)
 {
@@ -197,7 +216,7 @@ std::map<int, SupportedLevel> splitCoarse(const SupportedLevel& coarse, const Ch
             byCell.clear();
             for (std::uint32_t s = support.start[t]; s < support.start[t + 1]; ++s) {
                 const int cell = grid.cellOf(finest, support.finest[s]);
-                if (clipBoxes.count(cell))  // not kOutside
+                if (cell != ChunkGrid::kOutside)
                     byCell.emplace_back(cell, support.finest[s]);
             }
             std::sort(byCell.begin(), byCell.end());
@@ -208,8 +227,7 @@ std::map<int, SupportedLevel> splitCoarse(const SupportedLevel& coarse, const Ch
                 for (; i < byCell.size() && byCell[i].first == cell; ++i)
                     standsFor.push_back(byCell[i].second);
                 const Box3& cellBox = clipBoxes.at(cell);
-                const bool whole = cell == ChunkGrid::kLongCell || holds(cellBox, box);
-                cells[cell].append(coarse, p, t, whole ? nullptr : &cellBox, standsFor.data(),
+                cells[cell].append(coarse, p, t, holds(cellBox, box) ? nullptr : &cellBox, standsFor.data(),
                                    standsFor.data() + standsFor.size());
             }
         }
@@ -304,9 +322,8 @@ std::vector<flt::PartChunk> cut(const FinestTriangles& finest, const std::vector
             l.level.switchOut = levels[k].level.switchOut;
             chain.push_back(std::move(l));
         }
-        const std::string cell = entry.first == ChunkGrid::kLongCell ? "long" : std::to_string(entry.first);
-        chunks.push_back(
-            makeChunk(finest, std::move(chain), entry.second, name + how.separator + cell, ownerCentre, drawnTo));
+        chunks.push_back(makeChunk(finest, std::move(chain), entry.second, name + how.separator + grid.nameOf(entry.first),
+                                   ownerCentre, drawnTo));
     }
     return chunks;
 }

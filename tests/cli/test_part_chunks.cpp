@@ -2,11 +2,12 @@
 // each chunk switches where its own level holds at the chunk's nearest point, so the
 // chunks switch far nearer than the whole part's one LOD node may; a chunk whose first
 // simplified level waits for that floor is cut again, down to pieces of a draw call's
-// triangles; triangles longer than a chunk, and what stands for them, are a chunk of their
-// own.
+// triangles; triangles longer than a chunk, and what stands for them, are chunks of their
+// own, cells only across the axes they are long on.
 #include "assembly/part_chunks.h"
 
 #include "assembly/hierarchical_lod.h"  // kDrawCallTriangles
+#include "lod/cluster_tree.h"  // Box3
 #include "lod/nearest_point.h"
 
 #include <gtest/gtest.h>
@@ -254,6 +255,70 @@ TEST(PartChunks, ACoarseTriangleAcrossABorderIsInEveryChunkItStandsForCutToItsBo
         const flt::Vec3d& centre = chunk.levels.front().center;
         for (const flt::Level& level : chunk.levels)
             EXPECT_LE(level.reachFrom(centre), chunk.levels.front().reachFrom(centre) * (1 + 1e-3)) << level.name;
+    }
+    EXPECT_EQ(finest, levels.front().triangleCount());  // each finest triangle in one chunk
+}
+
+}  // namespace cadlod::test
+
+namespace cadlod::test {
+namespace {
+
+// A tube 2 m long along z, 1 m across, of `sides` slivers pairs the length of the tube, as a
+// CAD system tessellates a cylinder.
+flt::Level tube(int sides, double switchOut, double switchIn)
+{
+    flt::Level level;
+    flt::Part part;
+    part.name = "bar";
+    for (int i = 0; i < sides; ++i) {
+        const double angle = 2 * M_PI * i / sides;
+        part.positions.push_back({0.5 * std::cos(angle), 0.5 * std::sin(angle), 0});
+        part.positions.push_back({0.5 * std::cos(angle), 0.5 * std::sin(angle), 2});
+    }
+    for (std::uint32_t i = 0; i < std::uint32_t(sides); ++i) {
+        const std::uint32_t next = (i + 1) % std::uint32_t(sides);
+        part.triangles.push_back({2 * i, 2 * next, 2 * next + 1});
+        part.triangles.push_back({2 * i, 2 * next + 1, 2 * i + 1});
+    }
+    level.parts.push_back(part);
+    level.center = {0, 0, 1};
+    level.switchOut = switchOut;
+    level.switchIn = switchIn;
+    return level;
+}
+
+// How far a polygon of `sides` stands inside the tube's circle.
+double chordError(int sides)
+{
+    return 0.5 * (1 - std::cos(M_PI / sides));
+}
+
+}  // namespace
+
+// Every triangle of a tube is longer than a chunk along its axis. All in one long chunk, they
+// would be as far-reaching as the tube, and the tube not cut at all: they go to columns along
+// the axis, each a cell of the grid across it, by where they lie around the tube, and each
+// column switches by its own reach.
+TEST(PartChunks, ATubesSliversGoToColumnsByWhereTheyLieAroundIt)
+{
+    const std::vector<flt::Level> levels{tube(512, 0, 1.0), tube(64, 1.0, 4.0), tube(8, 4.0, 1e30)};
+    const std::vector<double> errors{0.0, chordError(64), chordError(8)};
+    const std::vector<flt::PartChunk> chunks = chunkLevels("bar", levels, errors, 0.0, kNeverCulled);
+    ASSERT_GE(chunks.size(), 8u);  // the cells of a 4 x 4 grid that the circle crosses
+    const double wholeReach = std::hypot(0.5, 0.5, 1.0);
+    std::size_t finest = 0;
+    for (const flt::PartChunk& chunk : chunks) {
+        const flt::Level& first = chunk.levels.front();
+        EXPECT_EQ(first.name.rfind("bar chunk long z ", 0), 0u) << first.name;
+        finest += first.triangleCount();
+        Box3 box;
+        for (const flt::Vec3d& p : first.parts.front().positions)
+            box.add(p);
+        EXPECT_LE(box.hi[0] - box.lo[0], 0.25 + 0.01) << first.name;  // a quarter across, and a sliver
+        EXPECT_LE(box.hi[1] - box.lo[1], 0.25 + 0.01) << first.name;
+        ASSERT_GE(chunk.levels.size(), 2u);
+        EXPECT_LT(chunk.levels[1].switchOut, switchAtNearestPoint(1.0, wholeReach) * 0.9) << first.name;
     }
     EXPECT_EQ(finest, levels.front().triangleCount());  // each finest triangle in one chunk
 }
