@@ -7,22 +7,33 @@
 #include "assembly/part_chunks.h"
 
 #include "assembly/hierarchical_lod.h"  // kDrawCallTriangles
-#include "lod/cluster_tree.h"  // Box3
+#include "lod/cluster_tree.h"           // Box3
 #include "lod/nearest_point.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 
 namespace cadlod::test {
 namespace {
 
+// A level of the one part `part`, named "bar", centred on `centre`.
+flt::Level levelOf(flt::Part part, const flt::Vec3d& centre, double switchOut, double switchIn)
+{
+    flt::Level level;
+    part.name = "bar";
+    level.parts.push_back(std::move(part));
+    level.center = centre;
+    level.switchOut = switchOut;
+    level.switchIn = switchIn;
+    return level;
+}
+
 // A strip 1 m long and 1 cm wide along x, of `cells` quads.
 flt::Level strip(int cells, double switchOut, double switchIn)
 {
-    flt::Level level;
     flt::Part part;
-    part.name = "bar";
     for (int i = 0; i <= cells; ++i) {
         part.positions.push_back({double(i) / cells, 0, 0});
         part.positions.push_back({double(i) / cells, 0.01, 0});
@@ -31,11 +42,31 @@ flt::Level strip(int cells, double switchOut, double switchIn)
         part.triangles.push_back({2 * i, 2 * i + 2, 2 * i + 3});
         part.triangles.push_back({2 * i, 2 * i + 3, 2 * i + 1});
     }
-    level.parts.push_back(part);
-    level.center = {0.5, 0.005, 0};
-    level.switchOut = switchOut;
-    level.switchIn = switchIn;
-    return level;
+    return levelOf(std::move(part), {0.5, 0.005, 0}, switchOut, switchIn);
+}
+
+// A tube 2 m long along z and 1 m across, of `sides` pairs of slivers the length of the tube,
+// as a CAD system tessellates a cylinder.
+flt::Level tube(int sides, double switchOut, double switchIn)
+{
+    flt::Part part;
+    for (int i = 0; i < sides; ++i) {
+        const double angle = 2 * M_PI * i / sides;
+        part.positions.push_back({0.5 * std::cos(angle), 0.5 * std::sin(angle), 0});
+        part.positions.push_back({0.5 * std::cos(angle), 0.5 * std::sin(angle), 2});
+    }
+    for (std::uint32_t i = 0; i < std::uint32_t(sides); ++i) {
+        const std::uint32_t next = (i + 1) % std::uint32_t(sides);
+        part.triangles.push_back({2 * i, 2 * next, 2 * next + 1});
+        part.triangles.push_back({2 * i, 2 * next + 1, 2 * i + 1});
+    }
+    return levelOf(std::move(part), {0, 0, 1}, switchOut, switchIn);
+}
+
+// How far a polygon of `sides` stands inside the tube's circle.
+double chordError(int sides)
+{
+    return 0.5 * (1 - std::cos(M_PI / sides));
 }
 
 // The errors of levels that lie in their finest level's plane.
@@ -258,43 +289,6 @@ TEST(PartChunks, ACoarseTriangleAcrossABorderIsInEveryChunkItStandsForCutToItsBo
     }
     EXPECT_EQ(finest, levels.front().triangleCount());  // each finest triangle in one chunk
 }
-
-}  // namespace cadlod::test
-
-namespace cadlod::test {
-namespace {
-
-// A tube 2 m long along z, 1 m across, of `sides` slivers pairs the length of the tube, as a
-// CAD system tessellates a cylinder.
-flt::Level tube(int sides, double switchOut, double switchIn)
-{
-    flt::Level level;
-    flt::Part part;
-    part.name = "bar";
-    for (int i = 0; i < sides; ++i) {
-        const double angle = 2 * M_PI * i / sides;
-        part.positions.push_back({0.5 * std::cos(angle), 0.5 * std::sin(angle), 0});
-        part.positions.push_back({0.5 * std::cos(angle), 0.5 * std::sin(angle), 2});
-    }
-    for (std::uint32_t i = 0; i < std::uint32_t(sides); ++i) {
-        const std::uint32_t next = (i + 1) % std::uint32_t(sides);
-        part.triangles.push_back({2 * i, 2 * next, 2 * next + 1});
-        part.triangles.push_back({2 * i, 2 * next + 1, 2 * i + 1});
-    }
-    level.parts.push_back(part);
-    level.center = {0, 0, 1};
-    level.switchOut = switchOut;
-    level.switchIn = switchIn;
-    return level;
-}
-
-// How far a polygon of `sides` stands inside the tube's circle.
-double chordError(int sides)
-{
-    return 0.5 * (1 - std::cos(M_PI / sides));
-}
-
-}  // namespace
 
 // Every triangle of a tube is longer than a chunk along its axis. All in one long chunk, they
 // would be as far-reaching as the tube, and the tube not cut at all: they go to columns along
