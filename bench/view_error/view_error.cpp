@@ -1,21 +1,21 @@
 // view_error FILE.flt...: the error on screen of an OpenFlight LOD model wherever the viewer
-// stands (design.md §8), as OpenSceneGraph reads and draws it. On four paths, inside (a
-// 4x4x2 grid of points in the bounding box), walk (50 points along the longest horizontal
-// side, 5 % of the diagonal outside it), approach (1x to 1000x the diagonal, log-spaced) and
-// far (the approach's points from 10x the diagonal on), every LOD node picks its children by
-// the distance from the eye to its centre in its own frame, as OSG's cull does. A drawn level
+// stands (design.md §8), as OpenSceneGraph reads and draws it. On four paths, inside (a 4x4x2
+// grid of points in the bounding box), walk (50 points along the longest horizontal side, 5 %
+// of the diagonal outside it), approach (1x to 1000x the diagonal, log-spaced) and far (the
+// approach's points from 10x the diagonal on), every LOD node picks its children by the
+// distance from the eye to its centre in its own frame, as OSG's cull does. A drawn level
 // switched in at s shows its error as s / n pixels, n being the distance from the eye to the
-// nearest vertex of that level's own geometry (by the chain's contract the error is 1 px at
-// s). Prints per path the worst and mean worst error, the triangles drawn as a share of level
-// 0 (with --estimate, REF's level 0) and the drawables (mean, most, and of them the cluster proxies); with --estimate REF, also
-// the share the per-cluster estimate of REF's chain draws (cluster_estimate.h) and the ratio
-// of the two, and the same for the estimate's cells as LOD nodes (with --estimate-triangles
-// FILE, level 0's triangles are FILE's, the shares REF's); with --walk-csv, every walk
-// point's figures; with --box, the paths are laid in that box rather than the model's own;
-// with --breakdown N, the N LOD records drawing the most triangles per path;
-// with --gaps, the gaps on screen (osg_view_probe.h) at points of the finest geometry, per
-// path: the widest, the mean of each eye point's widest, and the share wider than the
-// error bound (1.2 px, 5 % slack): within it where every drawn level keeps its error, wider
+// nearest vertex of that level's own geometry (by the chain's contract the error is 1 px at s).
+// Prints per path the worst and mean worst error, the triangles drawn as a share of level 0
+// (with --estimate, REF's level 0) and the drawables (mean, most, and of them the cluster
+// proxies); with --estimate REF, also the share the per-cluster estimate of REF's chain draws
+// (cluster_estimate.h) and the ratio of the two, and the same for the estimate's cells as LOD
+// nodes and for the estimate with long triangles held (with --estimate-triangles FILE, level 0's triangles are FILE's, the shares REF's);
+// with --walk-csv, every walk point's figures; with --box, the paths are laid in that box
+// rather than the model's own; with --breakdown N, the N LOD records drawing the most triangles
+// per path; with --gaps, the gaps on screen (osg_view_probe.h) at points of the finest
+// geometry, per path: the widest, the mean of each eye point's widest, and the share wider than
+// the error bound (1.2 px, 5 % slack): within it where every drawn level keeps its error, wider
 // where a chunk or part is missing beside its coarsened neighbours.
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>

@@ -156,8 +156,8 @@ PartChain convertPart(vrml::Geometry& geometry, const PartWelding& welding, cons
     std::vector<double> errors;
     for (const LodLevel& level : chain.result.levels)
         errors.push_back(level.hausdorffMax);
-    definition.chunks =
-        chunkLevels(definition.name, definition.levels, errors, smallestChunkedRadius, firstHeldSwitch(definition.levels));
+    definition.chunks = chunkLevels(definition.name, definition.levels, errors, smallestChunkedRadius,
+                                    firstHeldSwitch(definition.levels));
     holdAtNearestPoint(definition.levels, chain.result);
     return chain;
 }

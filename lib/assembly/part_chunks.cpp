@@ -216,7 +216,7 @@ std::map<int, SupportedLevel> splitCoarse(const SupportedLevel& coarse, const Ch
             byCell.clear();
             for (std::uint32_t s = support.start[t]; s < support.start[t + 1]; ++s) {
                 const int cell = grid.cellOf(finest, support.finest[s]);
-                if (cell != ChunkGrid::kOutside)
+                if (clipBoxes.count(cell))  // not kOutside
                     byCell.emplace_back(cell, support.finest[s]);
             }
             std::sort(byCell.begin(), byCell.end());
@@ -322,8 +322,8 @@ std::vector<flt::PartChunk> cut(const FinestTriangles& finest, const std::vector
             l.level.switchOut = levels[k].level.switchOut;
             chain.push_back(std::move(l));
         }
-        chunks.push_back(makeChunk(finest, std::move(chain), entry.second, name + how.separator + grid.nameOf(entry.first),
-                                   ownerCentre, drawnTo));
+        const std::string chunkName = name + how.separator + grid.nameOf(entry.first);
+        chunks.push_back(makeChunk(finest, std::move(chain), entry.second, chunkName, ownerCentre, drawnTo));
     }
     return chunks;
 }

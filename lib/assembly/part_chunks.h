@@ -4,16 +4,16 @@
 // viewer is several radii off (lod/nearest_point.h). Cut into a grid of chunks, the finest
 // level's triangles go to the chunk of their centroid; each chunk is an LOD node of its own,
 // with its own centre and reach, so the chunks away from the viewer coarsen early. The finest
-// triangles longer than a chunk (a face's slivers, a plate's two triangles) are chunks of
-// their own, which span the part along the axes they are long on and are cells along the
-// others: taken by a cell, one of them would hold that cell's whole chunk back to its length. A coarse triangle goes to every chunk whose finest triangles it stands
-// for, cut to the box of the chunk's finest triangles grown by the level's error: each
-// chunk's levels cover the surface its finest level does and reach no farther, and where two
-// chunks show different levels they overlap, but open no hole. Nearer than where its own first
-// simplified level holds, a chunk is cut again the same way: wherever the viewer stands, the
-// pieces about them are small enough to coarsen at the distance they are seen from. The
-// levels are the part's own chain, simplified whole: only the switch distances are the
-// chunk's.
+// triangles longer than a chunk (a face's slivers, a plate's two triangles) are chunks of their
+// own, which span the part along the axes they are long on and are cells along the others:
+// taken by a cell, one of them would hold that cell's whole chunk back to its length. A coarse
+// triangle goes to every chunk whose finest triangles it stands for, cut to the box of the
+// chunk's finest triangles grown by the level's error: each chunk's levels cover the surface
+// its finest level does and reach no farther, and where two chunks show different levels they
+// overlap, but open no hole. Nearer than where its own first simplified level holds, a chunk is
+// cut again the same way: wherever the viewer stands, the pieces about them are small enough to
+// coarsen at the distance they are seen from. The levels are the part's own chain, simplified
+// whole: only the switch distances are the chunk's.
 #pragma once
 
 #include "openflight/instanced_writer.h"  // PartChunk
