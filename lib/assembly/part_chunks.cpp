@@ -80,7 +80,7 @@ public:
     }
 
     // How a cell is named: its number in the grid, or for a long cell the axes it spans and
-    // its number among the cells along the others.
+    // the number of its first cell.
     std::string nameOf(int cell) const
     {
         const int longAxes = cell / cellsPerMask();
@@ -281,6 +281,7 @@ flt::PartChunk makeChunk(const FinestTriangles& finest, std::vector<SupportedLev
     holdAtNearestPoint(held, reach);
     const double farthest = drawnTo + flt::distance(centre, ownerCentre);
     flt::PartChunk chunk;
+    chunk.name = name;
     if (held.size() > 1 && held[1].switchOut < farthest && coarsensLate(levels, reach.front()))
         chunk.children = cut(finest, chain, box, kSubchunkCut, name, centre, held[1].switchOut);
     std::size_t drawn = 1;

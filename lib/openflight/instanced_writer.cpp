@@ -185,8 +185,9 @@ private:
         levels_.writeLevels({d.levels.begin() + 1, d.levels.end()}, true, form.second, 1);
     }
 
-    // `chunks` under a LOD record drawn nearer than `drawnTo` to `centre`, each in a Group
-    // named `prefix` and its number, its own children nested the same way beside its levels.
+    // `chunks` under a LOD record drawn nearer than `drawnTo` to `centre`, each in a Group of
+    // its name (else `prefix` and its number), its own children nested the same way beside
+    // its levels.
     void writeChunks(const std::string& owner, const std::string& prefix, const std::vector<PartChunk>& chunks,
                      double drawnTo, const Vec3d& centre, bool reversed)
     {
@@ -196,11 +197,11 @@ private:
         writePush(w_);
         ++stats_.lodNodes;
         for (std::size_t c = 0; c < chunks.size(); ++c) {
-            const std::string name = prefix + std::to_string(c + 1);
+            const PartChunk& chunk = chunks[c];
+            const std::string name = chunk.name.empty() ? prefix + std::to_string(c + 1) : chunk.name;
             writeGroup(w_, name);
             writeLongIdIfNeeded(w_, name);
             writePush(w_);
-            const PartChunk& chunk = chunks[c];
             if (!chunk.children.empty())
                 writeChunks(name, name + ".", chunk.children, chunk.childrenDrawnTo(), chunk.levels.front().center,
                             reversed);

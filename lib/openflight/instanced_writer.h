@@ -26,6 +26,7 @@ namespace cadlod::flt {
 // and nearer than that (childrenDrawnTo) as its `children`, smaller pieces of the same levels.
 // A chunk without children starts at its finest level, from 0.
 struct PartChunk {
+    std::string name;  // its group's (its levels are named after it); numbered after its part when empty
     std::vector<Level> levels;
     std::vector<PartChunk> children;
 

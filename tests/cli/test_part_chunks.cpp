@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <utility>
 
 namespace cadlod::test {
@@ -150,9 +151,11 @@ TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
         EXPECT_DOUBLE_EQ(chunk.levels[0].switchIn, chunk.levels[1].switchOut);
         EXPECT_LT(chunk.levels[1].switchOut, switchAtNearestPoint(1.0, wholeReach) / 2);
     }
-    for (const auto& chunk : chunks)  // named after the part, so that a reader can tell whose they are
+    for (const auto& chunk : chunks) {  // named after the part, so that a reader can tell whose they are
+        EXPECT_EQ(chunk.name.rfind("bar chunk ", 0), 0u) << chunk.name;
         for (std::size_t k = 0; k < chunk.levels.size(); ++k)
-            EXPECT_EQ(chunk.levels[k].name.rfind("bar chunk ", 0), 0u) << chunk.levels[k].name;
+            EXPECT_EQ(chunk.levels[k].name, chunk.name + " LOD" + std::to_string(k));
+    }
     // Smaller than the smallest part cut:
     EXPECT_TRUE(chunkLevels("bar", levels, exact(levels), 1.0, kNeverCulled).empty());
 
