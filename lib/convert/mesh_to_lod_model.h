@@ -118,58 +118,75 @@ PartGrouping groupFaces(Mesh& m, const LevelOptions& options)
     return g;
 }
 
+// The faces of each part, in mesh order; deleted faces left out.
+template <class Mesh>
+std::vector<std::vector<std::size_t>> facesOfParts(const Mesh& m, const PartGrouping& g)
+{
+    std::vector<std::vector<std::size_t>> faces(g.parts.size());
+    for (std::size_t i = 0; i < m.face.size(); ++i)
+        if (!m.face[i].IsD())
+            faces[std::size_t(g.partOfFace[i])].push_back(i);
+    return faces;
+}
+
 // One mesh as one neutral level: indexed parts with positions, normals and (optionally)
-// texture coordinates; degenerate faces are skipped and counted.
+// texture coordinates; degenerate faces are skipped and counted. The parts are written one
+// after another, so that one index of the mesh's vertices serves them all: a mesh of
+// thousands of parts (an expanded assembly) would need thousands of such indices at once.
 template <class Mesh>
 flt::Level meshToLevel(Mesh& m, const LevelOptions& options, LevelStats& stats)
 {
     PartGrouping g = groupFaces(m, options);
     const std::vector<vcg::Point3f> fallback = fallbackNormals(m);
     const CreaseFans fans(m);
-    std::vector<std::vector<std::int64_t>> localIndex(g.parts.size());
-    std::vector<std::unordered_map<std::uint32_t, std::int64_t>> fanIndex(g.parts.size());
-    for (std::size_t i = 0; i < m.face.size(); ++i) {
-        const auto& f = m.face[i];
-        if (f.IsD())
-            continue;
-        if (f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(0) == f.cV(2)) {
-            ++stats.skippedFaces;
-            continue;
-        }
-        const int p = g.partOfFace[i];
-        flt::Part& part = g.parts[std::size_t(p)];
-        std::vector<std::int64_t>& index = localIndex[std::size_t(p)];
-        if (index.empty())
-            index.assign(m.vert.size(), -1);
-        flt::Triangle tri;
-        for (int k = 0; k < 3; ++k) {
-            const std::size_t vi = vcg::tri::Index(m, f.cV(k));
-            // A vertex on a crease is written once per smooth fan, with the fan's normal;
-            // elsewhere once, with its own normal (the file's, or the mesh's).
-            const bool onCrease = fans.onCrease(vi);
-            const std::uint32_t fan = fans.fanOf(i, k);
-            std::int64_t& written = onCrease ? fanIndex[std::size_t(p)].try_emplace(fan, -1).first->second : index[vi];
-            if (written < 0) {
-                written = std::int64_t(part.positions.size());
-                const auto& v = m.vert[vi];
-                part.positions.push_back({double(v.cP()[0]), double(v.cP()[1]), double(v.cP()[2])});
-                const vcg::Point3f stored = vcg::Point3f::Construct(v.cN());
-                vcg::Point3f n = onCrease && detail::usableNormal(fans.normal(fan)) ? fans.normal(fan)
-                                 : detail::usableNormal(stored)                    ? stored
-                                                                                   : fallback[vi];
-                if (n.Norm() > 0)
-                    n.Normalize();
-                part.normals.push_back({n[0], n[1], n[2]});
-                if (options.uvs)
-                    part.uvs.push_back({float(v.cT().U()), float(v.cT().V())});
-                if (options.vertexColors)
-                    part.vertexColors.push_back(detail::toRgba(v.cC()));
+    std::vector<std::int64_t> index(m.vert.size(), -1);  // in the part being written
+    std::vector<std::size_t> indexed;                      // the vertices set in `index`
+    std::unordered_map<std::uint32_t, std::int64_t> fanIndex;
+    const std::vector<std::vector<std::size_t>> partFaces = facesOfParts(m, g);
+    for (std::size_t p = 0; p < g.parts.size(); ++p) {
+        flt::Part& part = g.parts[p];
+        for (const std::size_t i : partFaces[p]) {
+            const auto& f = m.face[i];
+            if (f.cV(0) == f.cV(1) || f.cV(1) == f.cV(2) || f.cV(0) == f.cV(2)) {
+                ++stats.skippedFaces;
+                continue;
             }
-            tri[k] = std::uint32_t(written);
+            flt::Triangle tri;
+            for (int k = 0; k < 3; ++k) {
+                const std::size_t vi = vcg::tri::Index(m, f.cV(k));
+                // A vertex on a crease is written once per smooth fan, with the fan's normal;
+                // elsewhere once, with its own normal (the file's, or the mesh's).
+                const bool onCrease = fans.onCrease(vi);
+                const std::uint32_t fan = fans.fanOf(i, k);
+                std::int64_t& written = onCrease ? fanIndex.try_emplace(fan, -1).first->second : index[vi];
+                if (written < 0) {
+                    written = std::int64_t(part.positions.size());
+                    if (!onCrease)
+                        indexed.push_back(vi);
+                    const auto& v = m.vert[vi];
+                    part.positions.push_back({double(v.cP()[0]), double(v.cP()[1]), double(v.cP()[2])});
+                    const vcg::Point3f stored = vcg::Point3f::Construct(v.cN());
+                    vcg::Point3f n = onCrease && detail::usableNormal(fans.normal(fan)) ? fans.normal(fan)
+                                     : detail::usableNormal(stored)                    ? stored
+                                                                                       : fallback[vi];
+                    if (n.Norm() > 0)
+                        n.Normalize();
+                    part.normals.push_back({n[0], n[1], n[2]});
+                    if (options.uvs)
+                        part.uvs.push_back({float(v.cT().U()), float(v.cT().V())});
+                    if (options.vertexColors)
+                        part.vertexColors.push_back(detail::toRgba(v.cC()));
+                }
+                tri[k] = std::uint32_t(written);
+            }
+            part.triangles.push_back(tri);
+            if (options.faceColors)
+                part.triangleColors.push_back(detail::toRgba(f.cC()));
         }
-        part.triangles.push_back(tri);
-        if (options.faceColors)
-            part.triangleColors.push_back(detail::toRgba(f.cC()));
+        for (const std::size_t vi : indexed)
+            index[vi] = -1;
+        indexed.clear();
+        fanIndex.clear();
     }
     flt::Level level;
     for (flt::Part& p : g.parts) {

@@ -101,6 +101,40 @@ TEST(MeshIo, MeshBecomesALevelWithOneObjectPerPartAndUsableNormals)
     EXPECT_EQ(stats.skippedFaces, 0u);
 }
 
+// A strip of four triangles whose faces belong to two parts in turn, over shared vertices, as
+// a simplified assembly leaves its parts' faces interleaved: each part is written whole, with
+// its own copy of each vertex it uses, in the order its faces first use them.
+TEST(MeshIo, PartsWhoseFacesInterleaveAreEachWrittenWithTheirOwnVertices)
+{
+    CoreMesh m;
+    auto v = vcg::tri::Allocator<CoreMesh>::AddVertices(m, 6);
+    for (int i = 0; i < 6; ++i) {
+        v[i].P() = {float(i / 2), float(i % 2), 0};
+        v[i].N() = {0, 0, 1};
+    }
+    for (int i = 0; i < 4; ++i)  // faces 0 and 2 are the first part's, 1 and 3 the second's, all facing -z
+        vcg::tri::Allocator<CoreMesh>::AddFace(m, &m.vert[i + i % 2], &m.vert[i + 1 - i % 2], &m.vert[i + 2]);
+    auto part = facePartHandle(m);
+    for (int i = 0; i < 4; ++i)
+        part[i] = i % 2;
+    partTableHandle(m)() = {PartIdentity{"EVEN"}, PartIdentity{"ODD"}};
+    mesh_io::LevelStats stats;
+    const flt::Level level = mesh_io::meshToLevel(m, {}, stats);
+    ASSERT_EQ(level.parts.size(), 2u);
+    const std::vector<std::vector<int>> used{{0, 1, 2, 3, 4}, {2, 1, 3, 4, 5}};  // first use, in order
+    const std::vector<std::vector<flt::Triangle>> triangles{{{0, 1, 2}, {2, 3, 4}}, {{0, 1, 2}, {3, 2, 4}}};
+    for (std::size_t p = 0; p < 2; ++p) {
+        const flt::Part& written = level.parts[p];
+        EXPECT_EQ(written.name, p == 0 ? "EVEN" : "ODD");
+        ASSERT_EQ(written.positions.size(), used[p].size());
+        for (std::size_t k = 0; k < used[p].size(); ++k) {
+            const auto& want = m.vert[used[p][k]].cP();
+            EXPECT_EQ(written.positions[k], (flt::Vec3d{want[0], want[1], want[2]})) << "part " << p << " vertex " << k;
+        }
+        EXPECT_EQ(written.triangles, triangles[p]) << "part " << p;
+    }
+}
+
 // A welded box (8 vertices, as the importer and the simplifier leave it) is written with one
 // vertex per corner of each side, lit by that side's normal: its edges stay sharp. Each
 // vertex's averaged normal would draw the box as a soft blob.
