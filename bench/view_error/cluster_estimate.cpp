@@ -176,14 +176,23 @@ double ClusterGrid::nodeShare(const osg::Vec3d& eye) const
     return drawn / double(total_);
 }
 
+std::vector<double> ClusterGrid::cellShares(const osg::Vec3d& eye) const
+{
+    std::vector<double> shares(triangles_.size(), 0.0);
+    for (int cell = 0; cell < int(triangles_.size()); ++cell)
+        if (triangles_[cell] > 0)
+            shares[cell] = chain_.shareAt(distanceToCell(eye, cell));
+    return shares;
+}
+
 double ClusterGrid::share(const osg::Vec3d& eye) const
 {
     if (total_ == 0)
         return 0;
+    const std::vector<double> shares = cellShares(eye);
     double drawn = 0;
     for (int cell = 0; cell < int(triangles_.size()); ++cell)
-        if (triangles_[cell] > 0)
-            drawn += double(triangles_[cell]) * chain_.shareAt(distanceToCell(eye, cell));
+        drawn += double(triangles_[cell]) * shares[cell];
     return drawn / double(total_);
 }
 
@@ -191,14 +200,11 @@ double ClusterGrid::heldShare(const osg::Vec3d& eye) const
 {
     if (total_ == 0)
         return 0;
-    std::vector<double> cellShare(triangles_.size(), 0.0);
-    for (int cell = 0; cell < int(triangles_.size()); ++cell)
-        if (triangles_[cell] > 0)
-            cellShare[cell] = chain_.shareAt(distanceToCell(eye, cell));
+    const std::vector<double> shares = cellShares(eye);
     double drawn = 0;
     for (std::size_t t = 0; t < total_; ++t) {
         const bool held = (osg::Vec3d(chain_.finestCentroids[t]) - eye).length() < kHeldRadii * chain_.finestRadii[t];
-        drawn += held ? 1.0 : cellShare[cellOfFinest_[t]];
+        drawn += held ? 1.0 : shares[cellOfFinest_[t]];
     }
     return drawn / double(total_);
 }

@@ -59,6 +59,8 @@ private:
     int cellIndex(const osg::Vec3f& point) const;
     osg::BoundingBoxd cellBox(int cell) const;
     double distanceToCell(const osg::Vec3d& eye, int cell) const;
+    // Each cell's share of its level 0 drawn from `eye` (0 for an empty cell).
+    std::vector<double> cellShares(const osg::Vec3d& eye) const;
     double distanceToCentre(const osg::Vec3d& eye, int cell) const;
 
     const ReferenceChain& chain_;

@@ -10,13 +10,14 @@
 // (with --estimate, REF's level 0) and the drawables (mean, most, and of them the cluster
 // proxies); with --estimate REF, also the share the per-cluster estimate of REF's chain draws
 // (cluster_estimate.h) and the ratio of the two, and the same for the estimate's cells as LOD
-// nodes and for the estimate with long triangles held (with --estimate-triangles FILE, level 0's triangles are FILE's, the shares REF's);
-// with --walk-csv, every walk point's figures; with --box, the paths are laid in that box
-// rather than the model's own; with --breakdown N, the N LOD records drawing the most triangles
-// per path; with --gaps, the gaps on screen (osg_view_probe.h) at points of the finest
-// geometry, per path: the widest, the mean of each eye point's widest, and the share wider than
-// the error bound (1.2 px, 5 % slack): within it where every drawn level keeps its error, wider
-// where a chunk or part is missing beside its coarsened neighbours.
+// nodes and for the estimate with long triangles held (with --estimate-triangles FILE, level
+// 0's triangles are FILE's, the shares REF's); with --walk-csv, every walk point's figures;
+// with --box, the paths are laid in that box rather than the model's own; with --breakdown N,
+// the N LOD records drawing the most triangles per path; with --gaps, the gaps on screen
+// (osg_view_probe.h) at points of the finest geometry, per path: the widest, the mean of each
+// eye point's widest, and the share wider than the error bound (1.2 px, 5 % slack): within it
+// where every drawn level keeps its error, wider where a chunk or part is missing beside its
+// coarsened neighbours.
 #include <osg/ComputeBoundsVisitor>
 #include <osg/Geode>
 #include <osg/Geometry>

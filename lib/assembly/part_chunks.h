@@ -41,13 +41,13 @@ inline constexpr double kChunkedPartShare = 1.0 / 16.0;
 inline constexpr std::size_t kLeastChunkTriangles = 64;
 
 // `levels`: the chain of the part named `partName` (its chunks' levels are named after it),
-// finest first, each switched in where its error projects to the pixel error at the centre
-// (not yet held at the nearest point); the chunks are drawn while
-// the eye is nearer than `drawnTo` to the part's centre (where its first simplified level,
-// held at its nearest point, takes over): a chunk keeps the levels it shows there. Empty
-// when chunks would not let any level switch nearer, the part's radius is below
-// `smallestRadius`, or its chunks would hold fewer than kLeastChunkTriangles each.
-// `errors[k]`: how far level k stands from the finest at most (its Hausdorff distance).
+// finest first, each switched in where its error projects to the pixel error at the centre (not
+// yet held at the nearest point); the chunks are drawn while the eye is nearer than `drawnTo`
+// to the part's centre (where its first simplified level, held at its nearest point, takes
+// over): a chunk keeps the levels it shows there. Empty when chunks would not let any level
+// switch nearer, the part's radius is below `smallestRadius`, or its chunks would hold fewer
+// than kLeastChunkTriangles each. `errors[k]`: how far level k stands from the finest at most
+// (its Hausdorff distance).
 std::vector<flt::PartChunk> chunkLevels(const std::string& partName, const std::vector<flt::Level>& levels,
                                         const std::vector<double>& errors, double smallestRadius, double drawnTo);
 

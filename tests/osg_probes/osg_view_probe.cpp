@@ -105,7 +105,7 @@ public:
                 standFor(lod, i);  // a cluster's proxy: what its near child holds
             proxyDepth_ += proxy;
             switchedIn_.push_back(lod.getMinRange(i) * scale);
-            levelNames_.push_back(lod.getName());
+            levelNames_.push_back(&lod.getName());
             lod.getChild(i)->accept(*this);
             levelNames_.pop_back();
             switchedIn_.pop_back();
@@ -165,7 +165,7 @@ private:
             appendTriangles(g, placed(), *drawn_);
         const std::size_t triangles = trianglesOf(g);
         view.triangles += triangles;
-        view.trianglesByLevel[levelNames_.empty() ? std::string() : levelNames_.back()] += triangles;
+        view.trianglesByLevel[levelNames_.empty() ? std::string() : *levelNames_.back()] += triangles;
         ++view.drawables;
         view.proxyDrawables += proxyDepth_ > 0 ? 1 : 0;
         const double s = switchedIn_.back();
@@ -181,7 +181,7 @@ private:
     const std::string& model_;
     std::vector<double> switchedIn_;
     std::vector<std::string> placement_;
-    std::vector<std::string> levelNames_;
+    std::vector<const std::string*> levelNames_;  // of the LOD nodes being drawn
     int proxyDepth_ = 0;
     std::vector<std::array<osg::Vec3d, 3>>* drawn_ = nullptr;
 };
