@@ -20,6 +20,9 @@ namespace cadlod {
 // The switch distance over the distance of the nearest vertex, at most.
 inline constexpr double kApparentErrorBound = 1.2;
 inline constexpr double kNearestPointReach = kApparentErrorBound / (kApparentErrorBound - 1.0);
+// A level held to a range narrower than this share of where it is switched in is one a
+// viewer would barely see: the finer level serves through it, and the file does not hold it.
+inline constexpr double kNarrowestRange = 0.05;
 
 // `atCentre`: where the level's error projects to the pixel error; `reach`: the largest
 // distance from the node's centre to a vertex of the level.
@@ -30,7 +33,8 @@ inline double switchAtNearestPoint(double atCentre, double reach)
 
 // Levels finest first, each drawn for switchOut <= d < switchIn, consecutive ones
 // contiguous; `reach[k]` for level k. Every switch moves to where it holds at the nearest
-// point; a level left with no range of its own is dropped. Returns the indices kept.
+// point; a level left with no range of its own, or one narrower than kNarrowestRange, is
+// dropped. Returns the indices kept.
 template <class Level>
 std::vector<std::size_t> holdAtNearestPoint(std::vector<Level>& levels, const std::vector<double>& reach)
 {
@@ -38,8 +42,10 @@ std::vector<std::size_t> holdAtNearestPoint(std::vector<Level>& levels, const st
     for (std::size_t k = 0; k < levels.size(); ++k) {
         if (k > 0 && levels[k].switchOut > 0 && levels[k].switchOut < kNeverCulled)
             levels[k].switchOut = switchAtNearestPoint(levels[k].switchOut, reach[k]);
-        while (!kept.empty() && kept.size() > 1 && levels[k].switchOut <= levels[kept.back()].switchOut)
-            kept.pop_back();  // the coarser level serves from where the finer one would have
+        // A level left with no range, or too narrow a one, gives way: the finer level before
+        // it serves up to where the coarser one is held.
+        while (kept.size() > 1 && levels[k].switchOut <= levels[kept.back()].switchOut * (1 + kNarrowestRange))
+            kept.pop_back();
         kept.push_back(k);
     }
     std::vector<Level> out;
