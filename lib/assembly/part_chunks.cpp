@@ -253,6 +253,7 @@ struct Cut {
     const char* separator = " chunk ";
 };
 inline constexpr Cut kChunkCut{};
+inline constexpr Cut kHalvesCut{kSubchunksPerAxis};
 inline constexpr Cut kSubchunkCut{kSubchunksPerAxis, kDrawCallTriangles, "."};
 
 std::vector<flt::PartChunk> cut(const FinestTriangles& finest, const std::vector<SupportedLevel>& levels,
@@ -351,8 +352,11 @@ std::vector<flt::PartChunk> chunkLevels(const std::string& partName, const std::
         drawable.push_back(level);
     }
     const FinestTriangles finest(levels.front());
-    return cut(finest, supported(drawable, errors, finest), box, kChunkCut, partName, levels.front().center,
-               drawnTo);
+    const std::vector<SupportedLevel> chain = supported(drawable, errors, finest);
+    std::vector<flt::PartChunk> chunks = cut(finest, chain, box, kChunkCut, partName, levels.front().center, drawnTo);
+    if (chunks.empty())  // too few triangles for a chunk a cell: maybe enough for halves
+        chunks = cut(finest, chain, box, kHalvesCut, partName, levels.front().center, drawnTo);
+    return chunks;
 }
 
 std::size_t chunkCount(const std::vector<flt::PartChunk>& chunks)

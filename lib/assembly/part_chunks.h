@@ -27,7 +27,8 @@ namespace cadlod {
 // A part is first cut into at most this many chunks along each axis.
 inline constexpr int kChunksPerAxis = 4;
 // A chunk is cut again into at most this many along each axis: its pieces are half its size,
-// and so may coarsen at half the distance.
+// and so may coarsen at half the distance. A part whose finest level is too few triangles for
+// kChunksPerAxis is cut into as many: a bolt in two along its length.
 inline constexpr int kSubchunksPerAxis = 2;
 // A part is cut when its radius is at least this share of the assembly's: smaller parts
 // are as small as the chunks would be, and chunks of them would only add draw calls.
@@ -45,8 +46,8 @@ inline constexpr std::size_t kLeastChunkTriangles = 64;
 // yet held at the nearest point); the chunks are drawn while the eye is nearer than `drawnTo`
 // to the part's centre (where its first simplified level, held at its nearest point, takes
 // over): a chunk keeps the levels it shows there. Empty when chunks would not let any level
-// switch nearer, the part's radius is below `smallestRadius`, or its chunks would hold fewer
-// than kLeastChunkTriangles each. `errors[k]`: how far level k stands from the finest at most
+// switch nearer, the part's radius is below `smallestRadius`, or even its halves would hold
+// fewer than kLeastChunkTriangles each. `errors[k]`: how far level k stands from the finest at most
 // (its Hausdorff distance).
 std::vector<flt::PartChunk> chunkLevels(const std::string& partName, const std::vector<flt::Level>& levels,
                                         const std::vector<double>& errors, double smallestRadius, double drawnTo);

@@ -170,10 +170,18 @@ TEST(PartChunks, EveryTriangleInOneChunkEachSwitchingAtItsOwnNearestPoint)
     }
 
     // 128 triangles would give each of the four chunks 32, fewer than kLeastChunkTriangles:
-    // four draw calls where one draws it all.
+    // the strip is cut in halves instead, of 64 each.
     const std::vector<flt::Level> few{strip(64, 0, 1.0), strip(16, 1.0, 4.0), strip(4, 4.0, 1e30)};
     EXPECT_LT(few.front().triangleCount(), 4 * kLeastChunkTriangles);
-    EXPECT_TRUE(chunkLevels("bar", few, exact(few), 0.0, kNeverCulled).empty());
+    const auto halves = chunkLevels("bar", few, exact(few), 0.0, kNeverCulled);
+    ASSERT_EQ(halves.size(), 2u);
+    for (const auto& half : halves) {
+        EXPECT_EQ(half.levels.front().triangleCount(), 64u);
+        EXPECT_NEAR(half.levels[1].switchOut, switchAtNearestPoint(1.0, std::hypot(0.25, 0.005)), 1e-9);
+    }
+    // 64 triangles, 32 a half: four or two draw calls where one draws it all.
+    const std::vector<flt::Level> fewer{strip(32, 0, 1.0), strip(16, 1.0, 4.0), strip(4, 4.0, 1e30)};
+    EXPECT_TRUE(chunkLevels("bar", fewer, exact(fewer), 0.0, kNeverCulled).empty());
 }
 
 namespace {
