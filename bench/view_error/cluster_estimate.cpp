@@ -62,8 +62,11 @@ private:
             const osg::Vec3d pa = osg::Vec3d(a) * m, pb = osg::Vec3d(b) * m, pc = osg::Vec3d(c) * m;
             const osg::Vec3d centroid = (pa + pb + pc) / 3.0;
             chain_.finestCentroids.push_back(osg::Vec3f(centroid));
-            chain_.finestRadii.push_back(
-                float(0.5 * std::max({(pa - pb).length(), (pb - pc).length(), (pc - pa).length()})));
+            const double ab = (pa - pb).length(), bc = (pb - pc).length(), ca = (pc - pa).length();
+            const double longest = std::max({ab, bc, ca});
+            chain_.finestRadii.push_back(float(0.5 * longest));
+            const osg::Vec3d midpoint = longest == ab ? pa + pb : longest == bc ? pb + pc : pc + pa;
+            chain_.finestSideMidpoints.push_back(osg::Vec3f(midpoint / 2.0));
         });
     }
 
@@ -203,7 +206,8 @@ double ClusterGrid::heldShare(const osg::Vec3d& eye) const
     const std::vector<double> shares = cellShares(eye);
     double drawn = 0;
     for (std::size_t t = 0; t < total_; ++t) {
-        const bool held = (osg::Vec3d(chain_.finestCentroids[t]) - eye).length() < kHeldRadii * chain_.finestRadii[t];
+        const double fromSide = (osg::Vec3d(chain_.finestSideMidpoints[t]) - eye).length();
+        const bool held = fromSide < kHeldRadii * chain_.finestRadii[t];
         drawn += held ? 1.0 : shares[cellOfFinest_[t]];
     }
     return drawn / double(total_);

@@ -13,6 +13,7 @@
 #include <osg/Vec3f>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -28,6 +29,7 @@ struct ReferenceChain {
     std::vector<ReferenceLevel> levels;  // sorted by minRange; levels[0] starts at 0
     std::vector<osg::Vec3f> finestCentroids;  // world coordinates
     std::vector<float> finestRadii;           // each one's least bounding radius: half its longest side
+    std::vector<osg::Vec3f> finestSideMidpoints;  // the midpoint of each one's longest side
 
     // T_k / T_0 of the level whose range holds the distance, else of the level nearest by range.
     double shareAt(double distance) const;
@@ -46,12 +48,16 @@ public:
     double share(const osg::Vec3d& eye) const;
     // The same, each cell an LOD node.
     double nodeShare(const osg::Vec3d& eye) const;
-    // share(), but each finest triangle drawn whole wherever the eye is nearer its centroid than
-    // kHeldRadii of its radii: an LOD node that holds it whole reaches at least that radius from
-    // its centre, and may not draw a coarser level until the eye is six of its reaches off its
-    // centre, so five off the triangle's centroid.
+    // share(), but each finest triangle drawn whole wherever the eye is nearer the midpoint of its
+    // longest side than kHeldRadii of its radii h (half that side). An LOD node whose levels
+    // each cover the surface of its finest, centred d off that midpoint, reaches at least
+    // sqrt(h^2 + d^2) from its centre: with 1.2 px at most on screen, it may not draw a coarser
+    // level until the eye is 1.2 / 0.2 = 6 such reaches off its centre. Wherever the node's
+    // centre, every eye within min over d of 6 sqrt(h^2 + d^2) - d = sqrt(35) h of the midpoint
+    // is that near it, and so sees the triangle at its finest.
     double heldShare(const osg::Vec3d& eye) const;
-    static constexpr double kHeldRadii = 5;
+    static constexpr double kSwitchReaches = 1.2 / (1.2 - 1.0);
+    static inline const double kHeldRadii = std::sqrt(kSwitchReaches * kSwitchReaches - 1);
     // Level 0's triangles, which the shares are of.
     std::size_t levelZero() const { return total_; }
 

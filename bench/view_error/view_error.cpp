@@ -287,6 +287,8 @@ int main(int argc, char** argv)
             return 1;
         }
         reference.finestCentroids = std::move(triangles.finestCentroids);
+        reference.finestRadii = std::move(triangles.finestRadii);
+        reference.finestSideMidpoints = std::move(triangles.finestSideMidpoints);
     }
     std::vector<double> box(6);
     if (!boxText.empty() && std::sscanf(boxText.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf", &box[0], &box[1], &box[2],
