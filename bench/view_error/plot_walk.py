@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Plots the triangles share and the worst error on screen along the walk, one line per file,
-from the CSV `view_error --walk-csv` writes; the estimate's share, when present, dashed.
+from the CSV `view_error --walk-csv` writes; the estimates' shares, when present, dashed: the
+per-cluster estimate in black, the estimate with long triangles held in grey.
 
 Draws with matplotlib when it is installed, else with gnuplot, else writes an SVG by hand.
 The output's format follows its extension (.png or .svg; the hand-written SVG is always SVG).
@@ -27,8 +28,14 @@ def column(rows, name):
     return [float(r[name]) for r in rows if r[name] != ""]
 
 
-def has_estimate(series):
-    return any(r["estimate_share"] != "" for rows in series.values() for r in rows)
+# The dashed reference curves: (CSV column, legend, colour).
+ESTIMATES = [("estimate_share", "estimate", "black"), ("held_estimate_share", "held estimate", "grey")]
+
+
+def estimates_in(series):
+    """The reference curves the CSV holds (an older CSV has no held estimate)."""
+    rows = [r for rows in series.values() for r in rows]
+    return [e for e in ESTIMATES if any(r.get(e[0]) for r in rows)]
 
 
 def plot_matplotlib(series, out):
@@ -41,9 +48,9 @@ def plot_matplotlib(series, out):
         label = os.path.basename(name)
         top.plot(index, column(rows, "triangles_share"), label=label)
         bottom.plot(index, column(rows, "worst_px"), label=label)
-    if has_estimate(series):
-        rows = next(iter(series.values()))
-        top.plot(column(rows, "index"), column(rows, "estimate_share"), "k--", label="estimate")
+    rows = next(iter(series.values()))
+    for key, label, colour in estimates_in(series):
+        top.plot(column(rows, "index"), column(rows, key), "--", color=colour, label=label)
     top.set_ylabel("triangles share of level 0")
     bottom.set_ylabel("worst error (px)")
     bottom.set_xlabel("walk point")
@@ -57,8 +64,8 @@ def gnuplot_script(series, data_files, out):
              "set termoption noenhanced", "set multiplot layout 2,1", "set key outside right",
              "set ylabel 'triangles share of level 0'"]
     share = [f"'{d}' using 1:2 with lines title '{os.path.basename(n)}'" for n, d in zip(series, data_files)]
-    if has_estimate(series):
-        share.append(f"'{data_files[0]}' using 1:4 with lines dashtype 2 lc 'black' title 'estimate'")
+    for i, (_, label, colour) in enumerate(estimates_in(series)):
+        share.append(f"'{data_files[0]}' using 1:{4 + i} with lines dashtype 2 lc '{colour}' title '{label}'")
     lines.append("plot " + ", ".join(share))
     lines += ["set ylabel 'worst error (px)'", "set xlabel 'walk point'"]
     worst = [f"'{d}' using 1:3 with lines title '{os.path.basename(n)}'" for n, d in zip(series, data_files)]
@@ -74,7 +81,8 @@ def plot_gnuplot(series, out):
             with open(path, "w", newline="") as f:
                 writer = csv.writer(f)
                 for r in rows:
-                    writer.writerow([r["index"], r["triangles_share"], r["worst_px"], r["estimate_share"]])
+                    writer.writerow([r["index"], r["triangles_share"], r["worst_px"]] +
+                                    [r[key] for key, _, _ in estimates_in(series)])
             data_files.append(path)
         subprocess.run(["gnuplot"], input=gnuplot_script(series, data_files, out), text=True, check=True)
 
@@ -111,10 +119,10 @@ def plot_svg(series, out):
         share.append((list(zip(index, column(rows, "triangles_share"))), colour, False))
         worst.append((list(zip(index, column(rows, "worst_px"))), colour, False))
         legend.append((os.path.basename(name), colour))
-    if has_estimate(series):
-        rows = next(iter(series.values()))
-        share.append((list(zip(column(rows, "index"), column(rows, "estimate_share"))), "black", True))
-        legend.append(("estimate", "black"))
+    rows = next(iter(series.values()))
+    for key, label, colour in estimates_in(series):
+        share.append((list(zip(column(rows, "index"), column(rows, key))), colour, True))
+        legend.append((label, colour))
     parts = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{width}" height="{height}">',
              '<rect width="100%" height="100%" fill="white"/>']
     parts += svg_panel(share, 40, 270, width, "triangles share of level 0")

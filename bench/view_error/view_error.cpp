@@ -83,7 +83,8 @@ public:
     {
         file_ = std::fopen(path.c_str(), "w");
         if (file_)
-            std::fputs("file,index,x,y,z,triangles_share,worst_px,drawables,estimate_share\n", file_);
+            std::fputs("file,index,x,y,z,triangles_share,worst_px,drawables,estimate_share,held_estimate_share\n",
+                       file_);
         return file_ != nullptr;
     }
     ~WalkCsv()
@@ -93,13 +94,16 @@ public:
     }
     bool isOpen() const { return file_ != nullptr; }
 
+    // `estimate`: the estimate's share and the held estimate's, or null without --estimate.
     void row(const std::string& model, std::size_t index, const osg::Vec3d& eye, double share,
-             const cadlod::test::OsgView& frame, const double* estimate)
+             const cadlod::test::OsgView& frame, const std::pair<double, double>* estimate)
     {
         std::fprintf(file_, "%s,%zu,%.9g,%.9g,%.9g,%.6f,%.4f,%zu,", quoted(model).c_str(), index, eye.x(),
                      eye.y(), eye.z(), share, frame.worstApparentPx, frame.drawables);
         if (estimate)
-            std::fprintf(file_, "%.6f", *estimate);
+            std::fprintf(file_, "%.6f,%.6f", estimate->first, estimate->second);
+        else
+            std::fputc(',', file_);
         std::fputc('\n', file_);
     }
 
@@ -146,6 +150,7 @@ PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
             model.osg->drawFrom({eye.x(), eye.y(), eye.z()}, model.gapSamples.empty() ? nullptr : &model.gaps);
         const double share = double(f.triangles) / model.levelZero;
         const double estimate = model.clusters ? model.clusters->share(eye) : 0;
+        const double heldEstimate = model.clusters ? model.clusters->heldShare(eye) : 0;
         totals.worst = std::max(totals.worst, f.worstApparentPx);
         totals.meanWorst += f.worstApparentPx;
         totals.share += share;
@@ -154,7 +159,7 @@ PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
         totals.proxyDrawables += double(f.proxyDrawables);
         totals.estimate += estimate;
         totals.nodeEstimate += model.clusters ? model.clusters->nodeShare(eye) : 0;
-        totals.heldEstimate += model.clusters ? model.clusters->heldShare(eye) : 0;
+        totals.heldEstimate += heldEstimate;
         if (!model.gapSamples.empty()) {
             const cadlod::test::OsgGaps& gaps = f.gaps;
             totals.widestGap = std::max(totals.widestGap, gaps.widestPx);
@@ -163,8 +168,10 @@ PathTotals measurePath(const Model& model, const Path& path, WalkCsv* walkCsv)
         }
         for (const auto& [level, triangles] : f.trianglesByLevel)
             totals.trianglesByLevel[level] += double(triangles);
-        if (walkCsv)
-            walkCsv->row(model.file, i, eye, share, f, model.clusters ? &estimate : nullptr);
+        if (walkCsv) {
+            const std::pair<double, double> estimates{estimate, heldEstimate};
+            walkCsv->row(model.file, i, eye, share, f, model.clusters ? &estimates : nullptr);
+        }
     }
     return totals;
 }
