@@ -74,6 +74,7 @@ def gnuplot_script(series, data_files, out):
 
 
 def plot_gnuplot(series, out):
+    estimates = [key for key, _, _ in estimates_in(series)]
     with tempfile.TemporaryDirectory() as tmp:
         data_files = []
         for i, rows in enumerate(series.values()):
@@ -81,8 +82,7 @@ def plot_gnuplot(series, out):
             with open(path, "w", newline="") as f:
                 writer = csv.writer(f)
                 for r in rows:
-                    writer.writerow([r["index"], r["triangles_share"], r["worst_px"]] +
-                                    [r[key] for key, _, _ in estimates_in(series)])
+                    writer.writerow([r["index"], r["triangles_share"], r["worst_px"]] + [r[key] for key in estimates])
             data_files.append(path)
         subprocess.run(["gnuplot"], input=gnuplot_script(series, data_files, out), text=True, check=True)
 
