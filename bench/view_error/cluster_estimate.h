@@ -18,6 +18,9 @@
 #include <string>
 #include <vector>
 
+// The bound on the error on screen, pixels: what every path is held to.
+inline constexpr double kErrorBoundPx = 1.2;
+
 struct ReferenceLevel {
     double minRange = 0;
     double maxRange = 0;
@@ -56,7 +59,7 @@ public:
     // centre, every eye within min over d of 6 sqrt(h^2 + d^2) - d = sqrt(35) h of the midpoint
     // is that near it, and so sees the triangle at its finest.
     double heldShare(const osg::Vec3d& eye) const;
-    static constexpr double kSwitchReaches = 1.2 / (1.2 - 1.0);
+    static constexpr double kSwitchReaches = kErrorBoundPx / (kErrorBoundPx - 1.0);
     static inline const double kHeldRadii = std::sqrt(kSwitchReaches * kSwitchReaches - 1);
     // Level 0's triangles, which the shares are of.
     std::size_t levelZero() const { return total_; }

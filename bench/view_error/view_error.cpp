@@ -128,9 +128,9 @@ struct PathTotals {
 };
 
 // How many points of the finest geometry the gaps are measured at, and the gap counted as
-// too wide: the error bound of lib/lod/nearest_point.h with the 5 % sampling slack.
+// too wide: the error bound (the one lib/lod/nearest_point.h keeps) with the 5 % sampling slack.
 constexpr std::size_t kGapSamples = 20000;
-constexpr double kWideGapPx = 1.2 * 1.05;
+constexpr double kWideGapPx = kErrorBoundPx * 1.05;
 
 struct Model {
     std::string file;
